@@ -1,0 +1,90 @@
+# wskel: weighted straight skeletons.  `make` builds the library and the
+# programs, `make test` runs every test (also under ASan/UBSan), `make bench`
+# runs the default sweep.  See README.md.
+CC      ?= cc
+CXX     ?= g++
+PY      := /usr/bin/python3
+WARN    := -Wall -Wextra -Werror
+CSTD    := -std=c11 -ffp-contract=off -fno-fast-math
+OPT     ?= -O2 -g
+CFLAGS  := $(CSTD) $(WARN) $(OPT) -fopenmp -Iengine -Ivariants -Ibench
+LDLIBS  := -lm -lgmp -fopenmp
+XML_CFLAGS := $(shell pkg-config --cflags libxml-2.0 2>/dev/null)
+XML_LIBS   := $(shell pkg-config --libs libxml-2.0 2>/dev/null)
+CFLAGS  += $(XML_CFLAGS)
+LDLIBS  += $(XML_LIBS)
+
+ENGINE_SRC  := $(sort $(wildcard engine/*.c))
+VARIANT_SRC := variants/registry.c $(sort $(wildcard variants/*/*.c))
+BENCHLIB_SRC := $(filter-out bench/wskel_%.c,$(sort $(wildcard bench/*.c)))
+LIB_SRC := $(ENGINE_SRC) $(VARIANT_SRC) $(BENCHLIB_SRC)
+TEST_SRC := $(sort $(wildcard tests/test_*.c))
+
+B  := build
+BA := build-asan
+LIB     := $(B)/libwskel.a
+LIBASAN := $(BA)/libwskel.a
+HDRS := $(wildcard engine/*.h variants/*.h variants/*/*.h bench/*.h)
+
+PROGS := bin/wskel bin/wskel-gen
+HAVE_CGAL := $(wildcard /usr/include/CGAL/create_straight_skeleton_2.h)
+ifneq ($(HAVE_CGAL),)
+PROGS += bin/wskel-cgal
+endif
+HAVE_BENCH := $(wildcard bench/wskel_bench.c)
+ifneq ($(HAVE_BENCH),)
+PROGS += bin/wskel-bench
+endif
+
+.PHONY: all test test-unit test-asan test-cli test-py bench curves regress clean setup
+
+all: $(LIB) $(PROGS)
+
+$(B)/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -c $< -o $@
+$(BA)/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all -c $< -o $@
+
+$(LIB): $(LIB_SRC:%.c=$(B)/%.o)
+	@rm -f $@; ar rcs $@ $^
+$(LIBASAN): $(LIB_SRC:%.c=$(BA)/%.o)
+	@rm -f $@; ar rcs $@ $^
+
+bin/wskel: $(B)/cli/wskel.o $(LIB)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+bin/wskel-gen: $(B)/bench/wskel_gen.o $(LIB)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+bin/wskel-bench: $(B)/bench/wskel_bench.o $(LIB)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+bin/wskel-cgal: tests/cgal/wskel_cgal.cpp
+	@mkdir -p bin
+	$(CXX) -std=c++17 -O2 -Wall -Wextra -Werror $< -o $@ -lgmp -lmpfr
+
+$(B)/tests/run_tests: $(TEST_SRC:%.c=$(B)/%.o) $(LIB)
+	$(CC) $(CFLAGS) $^ -o $@ -lcriterion $(LDLIBS)
+$(BA)/tests/run_tests: $(TEST_SRC:%.c=$(BA)/%.o) $(LIBASAN)
+	$(CC) $(CFLAGS) -fsanitize=address,undefined $^ -o $@ -lcriterion $(LDLIBS)
+
+# Unit and property tests, then the same under ASan/UBSan, then the
+# command-line and Python-side tests (exit codes, messages, VTK read-back,
+# CGAL agreement).
+test: all test-unit test-asan test-cli test-py
+test-unit: $(B)/tests/run_tests
+	$(B)/tests/run_tests --jobs 2
+test-asan: $(BA)/tests/run_tests
+	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BA)/tests/run_tests --jobs 2
+test-cli: all
+	bash tests/cli_tests.sh
+test-py: all
+	$(PY) tests/test_outputs.py
+
+setup:
+	bash .ci/install-deps
+
+clean:
+	rm -rf $(B) $(BA) bin

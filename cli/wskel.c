@@ -1,0 +1,277 @@
+/*
+** wskel.c: the command-line front end (bin/wskel).
+** Reads one polygon, runs one variant, optionally validates, writes one
+** output.  Output goes to FILE.tmp.PID and is renamed only on success, so a
+** failed run leaves no partial file.  Exit codes: 0 ok, 1 invalid input,
+** 2 the algorithm failed, 3 --check found the output invalid, 64 usage.
+*/
+#define _POSIX_C_SOURCE 200809L
+#include "wskel.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char usage_text[] =
+    "usage: wskel [options] INPUT\n"
+    "Compute the positively weighted straight skeleton of a simple polygon.\n"
+    "\n"
+    "INPUT is a .wpoly file or GraphML (detected by content); '-' reads stdin.\n"
+    "  .wpoly: '#' comment lines; first line n; then n lines 'x y [w]' where w\n"
+    "  (default 1) weights the edge from this vertex to the next.  Clockwise\n"
+    "  input is accepted and reversed internally; output keeps input numbering.\n"
+    "\n"
+    "options:\n"
+    "  --variant V        algorithm (default naive); --list-variants shows all\n"
+    "  --k K              arrangement cache size: a positive integer or 'max'\n"
+    "                     (default 1; ignored by variants without a cache)\n"
+    "  --format F         json (default), text, svg, obj (roof), vtp (VTK PolyData)\n"
+    "  -o FILE            write to FILE instead of stdout (atomically)\n"
+    "  --offsets T1,T2..  svg only: draw offset curves at these times\n"
+    "  --check            validate the skeleton (exit 3 if invalid)\n"
+    "  --stats            print counters, time and peak tracked bytes to stderr\n"
+    "  --collinear RULE   parallel edges of different weight meeting collinearly:\n"
+    "                     'lower' (default, the lower weight edge survives, as in\n"
+    "                     the arrangement paper) or 'higher' (surfer2's default)\n"
+    "  --threads N        OpenMP threads for variants that use them (default 1)\n"
+    "  --help             this text\n"
+    "\n"
+    "exit codes: 0 ok, 1 invalid input, 2 the algorithm failed,\n"
+    "            3 --check found the output invalid, 64 usage error\n";
+
+static int usage_error(const char *fmt, const char *arg) {
+    fprintf(stderr, "wskel: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\nTry 'wskel --help'.\n");
+    return 64;
+}
+
+static int report(wk_run *R) {
+    char buf[1024];
+    wk_error_format(R, buf, sizeof buf);
+    fprintf(stderr, "wskel: %s\n", buf);
+    return wk_status_exit_code(R->err.code);
+}
+
+static int parse_offsets(const char *s, double **out, uint32_t *n) {
+    uint32_t cap = 1;
+    for (const char *c = s; *c; c++) cap += (*c == ',');
+    double *v = calloc(cap, sizeof *v);
+    if (!v) return -1;
+    uint32_t k = 0;
+    const char *c = s;
+    while (*c) {
+        char *end;
+        errno = 0;
+        double t = strtod(c, &end);
+        if (end == c || errno || !(t >= 0) || t > 1e300 || (*end && *end != ',')) {
+            free(v);
+            return -1;
+        }
+        v[k++] = t;
+        c = *end ? end + 1 : end;
+    }
+    *out = v;
+    *n = k;
+    return 0;
+}
+
+int main(int argc, char **argv) {
+    const char *variant = "naive", *format = "json", *outpath = NULL, *input = NULL;
+    const char *offsets_arg = NULL;
+    bool check = false, stats = false, k_given = false;
+    uint32_t k = 1;
+    wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
+    int threads = 1;
+
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+#define NEED_ARG()                                                          \
+    do {                                                                    \
+        if (i + 1 >= argc) return usage_error("option %s needs a value", a); \
+    } while (0)
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(usage_text, stdout);
+            return 0;
+        } else if (!strcmp(a, "--list-variants")) {
+            for (size_t j = 0; wk_variant_at(j); j++)
+                printf("%-12s %s\n", wk_variant_at(j)->name, wk_variant_at(j)->summary);
+            return 0;
+        } else if (!strcmp(a, "--variant")) {
+            NEED_ARG();
+            variant = argv[++i];
+        } else if (!strcmp(a, "--k")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            k_given = true;
+            if (!strcmp(v, "max")) {
+                k = WK_K_MAX;
+            } else {
+                char *end;
+                errno = 0;
+                unsigned long long x = strtoull(v, &end, 10);
+                if (*v == '-' || end == v || *end || errno || x == 0 || x >= WK_K_MAX)
+                    return usage_error("--k must be a positive integer or 'max' (got '%s')", v);
+                k = (uint32_t)x;
+            }
+        } else if (!strcmp(a, "--format")) {
+            NEED_ARG();
+            format = argv[++i];
+            if (strcmp(format, "json") && strcmp(format, "svg") && strcmp(format, "obj") &&
+                strcmp(format, "vtp") && strcmp(format, "text"))
+                return usage_error("unknown format '%s' (json, text, svg, obj, vtp)", format);
+        } else if (!strcmp(a, "-o")) {
+            NEED_ARG();
+            outpath = argv[++i];
+        } else if (!strcmp(a, "--offsets")) {
+            NEED_ARG();
+            offsets_arg = argv[++i];
+        } else if (!strcmp(a, "--check")) {
+            check = true;
+        } else if (!strcmp(a, "--stats")) {
+            stats = true;
+        } else if (!strcmp(a, "--collinear")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            if (!strcmp(v, "lower")) collinear = WK_COLLINEAR_LOWER;
+            else if (!strcmp(v, "higher")) collinear = WK_COLLINEAR_HIGHER;
+            else return usage_error("--collinear must be 'lower' or 'higher' (got '%s')", v);
+        } else if (!strcmp(a, "--threads")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            char *end;
+            long x = strtol(v, &end, 10);
+            if (end == v || *end || x < 1 || x > 1024)
+                return usage_error("--threads must be an integer in 1..1024 (got '%s')", v);
+            threads = (int)x;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            return usage_error("unknown option '%s'", a);
+        } else {
+            if (input) return usage_error("more than one input given ('%s')", a);
+            input = a;
+        }
+#undef NEED_ARG
+    }
+    if (!input) return usage_error("%s", "no input file given");
+    const wk_variant *V = wk_variant_find(variant);
+    if (!V) return usage_error("unknown variant '%s' (see --list-variants)", variant);
+    if (k_given && !(V->flags & WK_VARIANT_USES_K))
+        fprintf(stderr, "wskel: note: variant %s ignores --k\n", V->name);
+    double *offsets = NULL;
+    uint32_t n_offsets = 0;
+    if (offsets_arg && parse_offsets(offsets_arg, &offsets, &n_offsets) != 0)
+        return usage_error("--offsets must be a comma-separated list of times >= 0 (got '%s')",
+                           offsets_arg);
+
+    wk_run R;
+    wk_run_init(&R);
+    R.opt.variant = V->name;
+    R.opt.k = k;
+    R.opt.collinear = collinear;
+    R.opt.threads = threads;
+
+    int rc = 0;
+    wk_polygon *P = NULL;
+    wk_skeleton *S = NULL;
+    FILE *out = NULL;
+    char *tmp = NULL;
+    double time_s = 0;
+    size_t peak = 0;
+
+    if (wk_polygon_read_file(&R, input, &P) != WK_OK) {
+        rc = report(&R);
+        goto done;
+    }
+    if (!(V->flags & WK_VARIANT_WEIGHTS)) {
+        for (uint32_t i = 0; i < P->n; i++)
+            if (P->w[i] != 1.0) {
+                WK_FAIL(&R, WK_EALGO, P->name, 0,
+                        "variant %s supports unit weights only (edge %u has weight %g)",
+                        V->name, wk_polygon_input_edge(P, i), P->w[i]);
+                rc = report(&R);
+                goto done;
+            }
+    }
+    if (wk_solve(&R, V, P, &S, &time_s, &peak) != WK_OK) {
+        rc = report(&R);
+        goto done;
+    }
+    if (check) {
+        wk_validate_report rep;
+        if (wk_validate(&R, P, S, 0, &rep) != WK_OK) {
+            rc = report(&R);
+            goto done;
+        }
+        if (stats)
+            fprintf(stderr, "check: ok (%u nodes, %u arcs, max distance error %.3g, area error %.3g)\n",
+                    rep.nodes, rep.arcs, rep.max_distance_error, rep.area_error);
+    }
+
+    if (outpath) {
+        size_t len = strlen(outpath) + 32;
+        tmp = malloc(len);
+        if (!tmp) {
+            WK_FAIL(&R, WK_ENOMEM, NULL, 0, "out of memory");
+            rc = report(&R);
+            goto done;
+        }
+        snprintf(tmp, len, "%s.tmp.%ld", outpath, (long)getpid());
+        out = fopen(tmp, "w");
+        if (!out) {
+            WK_FAIL(&R, WK_EINPUT, outpath, 0, "cannot write: %s", strerror(errno));
+            rc = report(&R);
+            goto done;
+        }
+    } else {
+        out = stdout;
+    }
+    wk_run_info info = {V->name, (V->flags & WK_VARIANT_USES_K) ? k : WK_NONE, time_s, peak,
+                        &R.counters};
+    wk_status st;
+    if (!strcmp(format, "json")) st = wk_write_json(&R, out, P, S, &info);
+    else if (!strcmp(format, "text")) st = wk_write_text(&R, out, P, S);
+    else if (!strcmp(format, "svg")) st = wk_write_svg(&R, out, P, S, offsets, n_offsets);
+    else if (!strcmp(format, "obj")) st = wk_write_obj(&R, out, P, S);
+    else st = wk_write_vtp(&R, out, P, S);
+    if (st == WK_OK && fflush(out) != 0)
+        st = WK_FAIL(&R, WK_EALGO, outpath ? outpath : "stdout", 0, "write failed: %s",
+                     strerror(errno));
+    if (out != stdout) {
+        if (fclose(out) != 0 && st == WK_OK)
+            st = WK_FAIL(&R, WK_EALGO, outpath, 0, "write failed: %s", strerror(errno));
+        out = NULL;
+        if (st == WK_OK && rename(tmp, outpath) != 0)
+            st = WK_FAIL(&R, WK_EALGO, outpath, 0, "cannot rename output: %s", strerror(errno));
+        if (st != WK_OK) remove(tmp);
+    }
+    if (st != WK_OK) {
+        rc = report(&R);
+        goto done;
+    }
+    if (stats) {
+        fprintf(stderr, "variant %s  n %u  r %u  nodes %u  arcs %u\n", V->name, P->n, P->r,
+                S->n_nodes, S->n_arcs);
+        fprintf(stderr, "time_s %.6f  peak_bytes %zu\n", time_s, peak);
+#define WK_PRINT_COUNTER(name) \
+    if (R.counters.name) fprintf(stderr, "%-32s %llu\n", #name, (unsigned long long)R.counters.name);
+        WK_COUNTER_LIST(WK_PRINT_COUNTER)
+#undef WK_PRINT_COUNTER
+    }
+
+done:
+    if (out && out != stdout) {
+        fclose(out);
+        remove(tmp);
+    }
+    free(tmp);
+    free(offsets);
+    wk_skeleton_free(&R, S);
+    wk_polygon_free(&R, P);
+    size_t left = wk_run_close(&R);
+    if (left != 0 && rc == 0) {
+        fprintf(stderr, "wskel: internal error: %zu bytes leaked\n", left);
+        rc = 2;
+    }
+    return rc;
+}

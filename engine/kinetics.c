@@ -1,0 +1,65 @@
+/*
+** kinetics.c: offset lines and vertex velocities (see kinetics.h).
+** Parallel lines: |cross(n_a, n_b)| below WK_PARALLEL_SIN (a sine) counts as
+** parallel: a vertex between edges that differ by less than ~1e-12 radians
+** would move at ~1e12 times the edge speed, which doubles cannot follow, and
+** the skeleton it traces differs from the parallel case's by less than the
+** tolerance.
+*/
+#include "kinetics.h"
+
+#include <math.h>
+
+#define WK_PARALLEL_SIN 1e-12
+
+void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L) {
+    wk_point a = P->p[e], b = P->p[(e + 1) % P->n];
+    double dx = b.x - a.x, dy = b.y - a.y;
+    double len = hypot(dx, dy);
+    L->ux = dx / len;
+    L->uy = dy / len;
+    L->nx = -L->uy;
+    L->ny = L->ux;
+    /* c from the midpoint: both endpoints then lie within rounding of the line */
+    double mx = 0.5 * (a.x + b.x), my = 0.5 * (a.y + b.y);
+    L->c = L->nx * mx + L->ny * my;
+    L->w = P->w[e];
+}
+
+wk_velocity_kind wk_vertex_velocity(const wk_offset_line *a, const wk_offset_line *b,
+                                    wk_point *v) {
+    double det = a->nx * b->ny - a->ny * b->nx;
+    if (fabs(det) <= WK_PARALLEL_SIN) {
+        double dot = a->nx * b->nx + a->ny * b->ny;
+        if (dot < 0) {
+            v->x = v->y = 0;
+            return WK_VEL_ANTIPARALLEL;
+        }
+        if (a->w == b->w) {
+            v->x = a->w * 0.5 * (a->nx + b->nx);
+            v->y = a->w * 0.5 * (a->ny + b->ny);
+            return WK_VEL_STRAIGHT;
+        }
+        v->x = v->y = 0;
+        return WK_VEL_COLLINEAR;
+    }
+    /* Cramer on [n_a; n_b] v = [w_a; w_b] */
+    v->x = (a->w * b->ny - a->ny * b->w) / det;
+    v->y = (a->nx * b->w - a->w * b->nx) / det;
+    return WK_VEL_REGULAR;
+}
+
+bool wk_offset_lines_meet(const wk_offset_line *a, const wk_offset_line *b, double t,
+                          wk_point *p) {
+    double det = a->nx * b->ny - a->ny * b->nx;
+    if (fabs(det) <= WK_PARALLEL_SIN) return false;
+    double ca = a->c + a->w * t, cb = b->c + b->w * t;
+    p->x = (ca * b->ny - a->ny * cb) / det;
+    p->y = (a->nx * cb - ca * b->nx) / det;
+    return true;
+}
+
+bool wk_is_reflex_turn(const wk_offset_line *a, const wk_offset_line *b) {
+    double cross = a->ux * b->uy - a->uy * b->ux;
+    return cross < -WK_PARALLEL_SIN;
+}

@@ -1,0 +1,49 @@
+/*
+** kinetics.h: constructions of the weighted wavefront (000, section 1).
+** Constructions compute numbers in double; decisions that must not go wrong
+** from rounding use engine/predicates (see tolerance policy in wskel.h).
+**
+** An edge e of the polygon has a supporting line l(e) and an inward unit
+** normal n(e); its offset line at time t is { p : n.p - c = w t } with
+** c = n.p0, i.e. it moves inward at speed w(e).  A wavefront vertex between
+** edges a (before it, counter-clockwise) and b (after it) moves with the
+** velocity v solving n(a).v = w(a), n(b).v = w(b), so it stays on both
+** offset lines.
+*/
+#ifndef WK_KINETICS_H
+#define WK_KINETICS_H
+#include "wskel.h"
+
+typedef struct wk_offset_line {
+    double ux, uy; /* unit direction of the edge (counter-clockwise) */
+    double nx, ny; /* inward unit normal = (-uy, ux) */
+    double c;      /* n . (a point of the edge) */
+    double w;      /* weight: inward speed */
+} wk_offset_line;
+
+typedef enum wk_velocity_kind {
+    WK_VEL_REGULAR = 0,  /* the two offset lines cross: v is their crossing's speed */
+    WK_VEL_STRAIGHT,     /* parallel, same direction, equal weights: v = w n */
+    WK_VEL_COLLINEAR,    /* parallel, same direction, different weights: undefined,
+                            resolved by the collinear rule (000, section 1) */
+    WK_VEL_ANTIPARALLEL  /* parallel, opposite directions: a zero-width spike */
+} wk_velocity_kind;
+
+void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L);
+/* Velocity of a vertex between offset lines a (before) and b (after). */
+wk_velocity_kind wk_vertex_velocity(const wk_offset_line *a, const wk_offset_line *b,
+                                    wk_point *v);
+/* Signed distance of p from L's offset line at time t (positive: inside,
+** i.e. not yet swept). */
+static inline double wk_offset_distance(const wk_offset_line *L, wk_point p, double t) {
+    return L->nx * p.x + L->ny * p.y - L->c - L->w * t;
+}
+/* The point on both offset lines a and b at time t; false if they are
+** (nearly) parallel. */
+bool wk_offset_lines_meet(const wk_offset_line *a, const wk_offset_line *b, double t,
+                          wk_point *p);
+/* True if turning from edge direction a to edge direction b is a right turn
+** (the vertex between them is reflex).  Exact on the input directions. */
+bool wk_is_reflex_turn(const wk_offset_line *a, const wk_offset_line *b);
+
+#endif

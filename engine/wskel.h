@@ -1,0 +1,399 @@
+/*
+** wskel.h: the public interface of the wskel library (build/libwskel.a).
+**
+** wskel computes positively weighted straight skeletons of simple polygons.
+** Everything a computation needs hangs off one run context (wk_run): the
+** counting allocator, the event counters, the observer, the options and the
+** first error.  There are no mutable globals, so independent runs may go in
+** parallel (one wk_run per thread or per forked child).
+**
+** Conventions used throughout:
+**   - polygons are stored counter-clockwise; edge i runs from vertex i to
+**     vertex i+1 (mod n) and carries weight w[i] > 0 (its offset line moves
+**     inward at speed w[i]);
+**   - a skeleton's first n nodes are the input vertices in input order, t = 0;
+**   - an arc [a, b, left, right] runs from node a to node b; `left` is the
+**     input edge whose face lies to the left of a->b, `right` the one to the
+**     right (WK_NONE never appears in a finished skeleton);
+**   - every function that allocates, counts or can fail takes wk_run *R first
+**     and returns a wk_status; on failure R->err holds the first failure and
+**     outputs are left untouched (NULL).
+*/
+#ifndef WSKEL_H
+#define WSKEL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#define WK_NONE UINT32_MAX
+#define WK_K_MAX UINT32_MAX /* --k max: cache the whole arrangement */
+
+typedef enum wk_status {
+    WK_OK = 0,
+    WK_EINPUT,   /* invalid input: CLI exit code 1 */
+    WK_ENOMEM,   /* allocation failed or over the memory limit: exit 2 */
+    WK_EALGO,    /* the algorithm could not handle the input: exit 2 */
+    WK_EINVALID, /* the validator rejected an output: exit 3 */
+    WK_EUSAGE    /* bad options: exit 64 */
+} wk_status;
+
+/* Exit code of the command-line tools for a status. */
+int wk_status_exit_code(wk_status s);
+const char *wk_status_name(wk_status s);
+
+typedef struct wk_point { double x, y; } wk_point;
+
+/* ---------------------------------------------------------------- errors */
+
+typedef struct wk_error {
+    wk_status code;      /* WK_OK while no failure happened */
+    char input[256];     /* input file name, "" if none */
+    long input_line;     /* 1-based line in that file, 0 if none */
+    const char *src_file;/* where in wskel the failure was raised */
+    int src_line;
+    char msg[512];       /* what went wrong, naming the culprit */
+} wk_error;
+
+/* ------------------------------------------------------------- allocator */
+
+/* Lua's allocator shape: old_size is the size the caller allocated, so the
+** statistics need no block headers.  new_size == 0 frees and returns NULL. */
+typedef void *(*wk_realloc_fn)(void *ud, void *p, size_t old_size, size_t new_size);
+
+typedef struct wk_alloc {
+    wk_realloc_fn fn;     /* backend; libc by default */
+    void *ud;
+    size_t live;          /* bytes allocated now */
+    size_t peak;          /* high-water mark of live since the last reset */
+    size_t blocks;        /* live blocks */
+    uint64_t calls;       /* allocation calls (not frees) since init */
+    size_t limit;         /* refuse to go beyond this many live bytes; 0: none */
+    int64_t fail_after;   /* fault injection: fail the call after this many
+                             successful allocations; -1: never */
+} wk_alloc;
+
+/* ------------------------------------------------------------- counters */
+
+/* X-macro list so that writers, the harness and the regression check can
+** enumerate the counters by name.  Counters hold counts only (no times, no
+** addresses), so they are deterministic. */
+#define WK_COUNTER_LIST(X)                 \
+    X(edge_events)                         \
+    X(split_events)                        \
+    X(multi_split_events)                  \
+    X(switch_events)                       \
+    X(start_events)                        \
+    X(reflex_preserving_edge_events)       \
+    X(vanishing_components)                \
+    X(simultaneous_event_groups)           \
+    X(collinear_resolutions)               \
+    X(arrangement_inserts)                 \
+    X(arrangement_removes)                 \
+    X(arrangement_crossings_initial)       \
+    X(intersection_queries)                \
+    X(segments_scanned)                    \
+    X(cache_hits)                          \
+    X(cache_misses)                        \
+    X(cache_refills)                       \
+    X(cache_invalidations)                 \
+    X(queue_pushes)                        \
+    X(queue_pops)                          \
+    X(queue_updates)                       \
+    X(queue_removes)                       \
+    X(exact_fallbacks)                     \
+    X(stale_events)
+
+typedef struct wk_counters {
+#define WK_COUNTER_FIELD(name) uint64_t name;
+    WK_COUNTER_LIST(WK_COUNTER_FIELD)
+#undef WK_COUNTER_FIELD
+} wk_counters;
+
+/* ------------------------------------------------------------- observer */
+
+typedef enum wk_event_kind {
+    WK_EV_EDGE,              /* an edge shrank to zero length */
+    WK_EV_SPLIT,             /* a reflex vertex hit the interior of an edge */
+    WK_EV_MULTI_SPLIT,       /* several reflex vertices met at one point */
+    WK_EV_SWITCH,            /* arrangement variants: convex vertex jumped */
+    WK_EV_START,             /* arrangement variants: Steiner vertex started */
+    WK_EV_REFLEX_EDGE,       /* edge event whose result is reflex */
+    WK_EV_VANISH,            /* a wavefront component vanished */
+    WK_EV_GROUP,             /* a group of simultaneous events was resolved */
+    WK_EV_COLLINEAR,         /* parallel edges of different weight met (rule) */
+    WK_EV_KIND_COUNT
+} wk_event_kind;
+
+typedef struct wk_event {
+    double t, x, y;          /* time and place */
+    uint32_t a, b, c;        /* ids involved (variant-defined), WK_NONE if unused */
+} wk_event;
+
+typedef enum wk_queue_op { WK_Q_PUSH, WK_Q_POP, WK_Q_UPDATE, WK_Q_REMOVE } wk_queue_op;
+typedef enum wk_cache_op { WK_C_HIT, WK_C_MISS, WK_C_REFILL, WK_C_INVALIDATE } wk_cache_op;
+typedef enum wk_arr_op {
+    WK_A_INSERT, WK_A_REMOVE, WK_A_QUERY, WK_A_SCANNED, WK_A_INITIAL_CROSSING
+} wk_arr_op;
+
+/* Hooks may be NULL.  Observers see const data and cannot steer a run. */
+typedef struct wk_observer {
+    void (*event_processed)(void *ud, wk_event_kind kind, const wk_event *e);
+    void (*queue_op)(void *ud, wk_queue_op op);
+    void (*cache_op)(void *ud, wk_cache_op op);
+    void (*arrangement_op)(void *ud, wk_arr_op op, uint64_t count);
+    void (*exact_fallback)(void *ud);
+    void (*stale_event)(void *ud);
+    void (*finished)(void *ud, bool ok);
+} wk_observer;
+
+/* The default observer: the only code that writes R->counters.  Its ud is
+** the wk_counters to fill. */
+extern const wk_observer wk_observer_counting;
+
+/* -------------------------------------------------------------- options */
+
+typedef enum wk_collinear_rule {
+    WK_COLLINEAR_LOWER = 0,  /* 000: the lower weight edge survives (default) */
+    WK_COLLINEAR_HIGHER      /* surfer2's default: the higher weight survives */
+} wk_collinear_rule;
+
+typedef struct wk_options {
+    const char *variant;     /* "naive" by default */
+    uint32_t k;              /* arrangement cache size; WK_K_MAX for max */
+    wk_collinear_rule collinear;
+    int threads;             /* OpenMP threads for variants that use them */
+    bool check_invariants;   /* run costly internal checks after each event */
+} wk_options;
+
+/* ------------------------------------------------------------------ run */
+
+typedef struct wk_run {
+    wk_alloc alloc;
+    wk_counters counters;    /* written only through the observer */
+    const wk_observer *obs;  /* never NULL */
+    void *obs_ud;            /* &counters for the counting observer */
+    wk_options opt;
+    wk_error err;            /* the first failure wins */
+} wk_run;
+
+/* Cannot fail; leaves R closable.  Default options, libc allocator,
+** counting observer. */
+void wk_run_init(wk_run *R);
+/* Releases nothing itself (objects are freed by their owners); returns the
+** number of live bytes left, which must be 0 after a clean run. */
+size_t wk_run_close(wk_run *R);
+/* Start a new phase for the peak statistic: peak := live. */
+void wk_run_reset_peak(wk_run *R);
+
+/* Record a failure (the first one wins) and return its code.  Use WK_FAIL. */
+wk_status wk_fail(wk_run *R, wk_status code, const char *input, long input_line,
+                  const char *src_file, int src_line, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 7, 8)))
+#endif
+    ;
+#define WK_FAIL(R, code, input, line, ...) \
+    wk_fail((R), (code), (input), (line), __FILE__, __LINE__, __VA_ARGS__)
+/* Format R->err as "file:line: message" into buf. */
+void wk_error_format(const wk_run *R, char *buf, size_t size);
+
+/* Raw allocation through the run (counts bytes, honours limit/fault
+** injection).  Returns NULL on failure after recording WK_ENOMEM.
+** wk_realloc(R, p, old, 0) frees and returns NULL without failing. */
+void *wk_realloc(wk_run *R, void *p, size_t old_size, size_t new_size);
+void *wk_calloc(wk_run *R, size_t count, size_t size);
+#define WK_NEW_ARRAY(R, T, n) ((T *)wk_calloc((R), (n), sizeof(T)))
+#define WK_FREE_ARRAY(R, p, n) \
+    ((void)wk_realloc((R), (p), (size_t)(n) * sizeof(*(p)), 0), (p) = NULL)
+/* Grow *pp (an array of elem_size elements with capacity *cap) to hold at
+** least need elements; doubles.  On failure *pp and *cap are unchanged. */
+wk_status wk_grow(wk_run *R, void **pp, uint32_t *cap, uint32_t need, size_t elem_size);
+#define WK_GROW(R, p, cap, need) wk_grow((R), (void **)&(p), &(cap), (need), sizeof(*(p)))
+
+/* Observer notifications (thin inline wrappers). */
+static inline void wk_notify_event(wk_run *R, wk_event_kind k, const wk_event *e) {
+    if (R->obs->event_processed) R->obs->event_processed(R->obs_ud, k, e);
+}
+static inline void wk_notify_queue(wk_run *R, wk_queue_op op) {
+    if (R->obs->queue_op) R->obs->queue_op(R->obs_ud, op);
+}
+static inline void wk_notify_cache(wk_run *R, wk_cache_op op) {
+    if (R->obs->cache_op) R->obs->cache_op(R->obs_ud, op);
+}
+static inline void wk_notify_arrangement(wk_run *R, wk_arr_op op, uint64_t count) {
+    if (R->obs->arrangement_op) R->obs->arrangement_op(R->obs_ud, op, count);
+}
+static inline void wk_notify_exact(wk_run *R) {
+    if (R->obs->exact_fallback) R->obs->exact_fallback(R->obs_ud);
+}
+static inline void wk_notify_stale(wk_run *R) {
+    if (R->obs->stale_event) R->obs->stale_event(R->obs_ud);
+}
+
+/* -------------------------------------------------------------- polygon */
+
+/* Largest vertex count wk_polygon_from_arrays accepts (and the readers). */
+#define WK_POLYGON_MAX_N 50000000u
+/* Largest coordinate magnitude accepted: keeps every product the exact
+** predicates form far from overflow. */
+#define WK_POLYGON_MAX_COORD 1e150
+
+typedef struct wk_polygon {
+    uint32_t n;          /* vertices (= edges), >= 3 */
+    uint32_t r;          /* reflex vertices (interior angle > pi) */
+    wk_point *p;         /* counter-clockwise */
+    double *w;           /* w[i]: weight of edge i (p[i] -> p[i+1]), > 0 */
+    bool reversed;       /* input was clockwise and was reversed */
+    uint32_t *input_index; /* input_index[i]: the input line order of p[i] */
+    char name[256];      /* file name for messages */
+} wk_polygon;
+
+/* Build a polygon from arrays (copied), validate it (see wk_polygon_validate)
+** and orient it counter-clockwise.  w may be NULL (unit weights).  name is
+** used in messages.  lines may be NULL, else lines[i] is the input line of
+** vertex i (for messages). */
+wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const double *y,
+                                 const double *w, const char *name, const long *lines,
+                                 wk_polygon **out);
+/* Read a .wpoly or GraphML file (chosen by content; "-" reads stdin). */
+wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out);
+wk_status wk_polygon_read_wpoly(wk_run *R, FILE *f, const char *name, wk_polygon **out);
+wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const char *name,
+                                  wk_polygon **out);
+/* Write .wpoly (counter-clockwise, as stored). */
+wk_status wk_polygon_write_wpoly(wk_run *R, FILE *f, const wk_polygon *P);
+void wk_polygon_free(wk_run *R, wk_polygon *P);
+/* Input numbering.  Stored vertex j is input vertex P->input_index[j]; stored
+** edge j (p[j] -> p[j+1]) is input edge wk_polygon_input_edge(P, j), where
+** input edge i runs from input vertex i to input vertex i+1.  Writers emit
+** input numbering; algorithms and the validator use stored numbering. */
+uint32_t wk_polygon_input_edge(const wk_polygon *P, uint32_t e);
+/* Output id of skeleton node j: input_index[j] for j < n, j otherwise. */
+uint32_t wk_polygon_output_node(const wk_polygon *P, uint32_t j);
+/* Signed area (positive for counter-clockwise). */
+double wk_polygon_area(const wk_polygon *P);
+/* True if vertex i is reflex (robust orientation test). */
+bool wk_polygon_is_reflex(const wk_polygon *P, uint32_t i);
+
+/* ----------------------------------------------------------- predicates */
+
+/* Sign of the orientation of (a, b, c): +1 left turn (counter-clockwise),
+** -1 right turn, 0 collinear.  Exact (float filter, expansion fallback).
+** *exact_used (may be NULL) is set to true when the exact stage ran. */
+int wk_orient2d(wk_point a, wk_point b, wk_point c, bool *exact_used);
+/* Unfiltered double evaluation, for benchmarks and tests only. */
+int wk_orient2d_fast(wk_point a, wk_point b, wk_point c);
+
+/* How two closed segments [a, b] and [c, d] meet, decided exactly (built on
+** wk_orient2d).  TOUCH: they share exactly one point, which is an endpoint of
+** at least one of them (or a segment is a single point); CROSS: they share
+** one point interior to both; OVERLAP: collinear, sharing a segment of
+** positive length. */
+typedef enum wk_seg_meet {
+    WK_SEG_DISJOINT = 0,
+    WK_SEG_CROSS,
+    WK_SEG_TOUCH,
+    WK_SEG_OVERLAP
+} wk_seg_meet;
+wk_seg_meet wk_segments_meet(wk_point a, wk_point b, wk_point c, wk_point d);
+/* True if the closed segments [a, b] and [c, d] share a point (exact). */
+bool wk_segments_intersect(wk_point a, wk_point b, wk_point c, wk_point d);
+
+/* ------------------------------------------------------------- skeleton */
+
+typedef struct wk_node { double x, y, t; } wk_node;
+typedef struct wk_arc { uint32_t a, b, left, right; } wk_arc;
+
+typedef struct wk_skeleton {
+    uint32_t n_input;        /* the first n_input nodes are the input vertices */
+    uint32_t n_nodes, cap_nodes;
+    uint32_t n_arcs, cap_arcs;
+    wk_node *nodes;
+    wk_arc *arcs;
+} wk_skeleton;
+
+/* New skeleton whose first P->n nodes are P's vertices at t = 0. */
+wk_status wk_skeleton_new(wk_run *R, const wk_polygon *P, wk_skeleton **out);
+/* Append a node; *id receives its index. */
+wk_status wk_skeleton_add_node(wk_run *R, wk_skeleton *S, double x, double y, double t,
+                               uint32_t *id);
+wk_status wk_skeleton_add_arc(wk_run *R, wk_skeleton *S, uint32_t a, uint32_t b,
+                              uint32_t left, uint32_t right);
+void wk_skeleton_free(wk_run *R, wk_skeleton *S);
+
+/* ------------------------------------------------------------ tolerance */
+
+/* The one tolerance policy (see engine/tolerance.h for the reasoning):
+** lengths are compared with WK_TOL_REL times the polygon's scale (the
+** diagonal of its bounding box); times with the same relative tolerance
+** divided by the largest weight. */
+#define WK_TOL_REL 1e-9
+double wk_polygon_scale(const wk_polygon *P);
+
+/* ------------------------------------------------------------ validator */
+
+typedef struct wk_validate_report {
+    uint32_t nodes, arcs, faces;
+    double max_distance_error; /* worst |dist(node, line e) - w(e) t| */
+    double area_error;         /* |sum of face areas - polygon area| */
+} wk_validate_report;
+
+/* Check S against P (see engine/validate.c for the list of properties).
+** tol: absolute distance tolerance; <= 0 selects the default
+** (1e-6 * scale).  Returns WK_OK or WK_EINVALID with the first violated
+** property in R->err.  rep may be NULL. */
+wk_status wk_validate(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
+                      wk_validate_report *rep);
+
+/* -------------------------------------------------------------- writers */
+
+typedef struct wk_run_info {
+    const char *variant;
+    uint32_t k;              /* WK_NONE: not applicable ("k":null) */
+    double time_s;           /* construction time */
+    size_t peak_bytes;       /* peak tracked bytes of the construction */
+    const wk_counters *counters;
+} wk_run_info;
+
+wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
+                        const wk_run_info *info);
+wk_status wk_write_text(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
+/* offsets: times at which to draw offset curves (may be NULL / 0). */
+wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
+                       const double *offsets, uint32_t n_offsets);
+wk_status wk_write_obj(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
+wk_status wk_write_vtp(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
+
+/* Faces: the boundary of edge e's face as a node cycle starting with the
+** edge's two vertices (e, e+1, ..., back).  Used by the validator and the
+** roof writers.  *cycle is allocated through R (free with WK_FREE_ARRAY
+** using *len). */
+wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
+                        uint32_t **cycle, uint32_t *len);
+
+/* ------------------------------------------------------------- variants */
+
+typedef struct wk_variant {
+    const char *name;
+    const char *summary;
+    unsigned flags;          /* WK_VARIANT_* */
+    wk_status (*run)(wk_run *R, const wk_polygon *P, wk_skeleton **out);
+} wk_variant;
+
+#define WK_VARIANT_WEIGHTS 1u /* handles non-unit weights */
+#define WK_VARIANT_USES_K 2u  /* the k option matters */
+
+/* NULL-terminated registry lookup; NULL if unknown. */
+const wk_variant *wk_variant_find(const char *name);
+/* i-th registered variant, NULL past the end. */
+const wk_variant *wk_variant_at(size_t i);
+
+/* Run a variant on P: resets the peak, times the construction.  On success
+** *out is the skeleton (caller frees with wk_skeleton_free); time_s and
+** peak_bytes (may be NULL) receive the construction's figures. */
+wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skeleton **out,
+                   double *time_s, size_t *peak_bytes);
+
+#endif

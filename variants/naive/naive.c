@@ -1,0 +1,914 @@
+/*
+** naive.c: the reference variant.  Classical event-driven simulation of the
+** weighted wavefront of a simple polygon with brute-force split detection.
+** Clarity beats speed: this is the oracle the other variants are tested
+** against.
+**
+** Model.  The wavefront is a set of disjoint cycles of wavefront vertices
+** (prev/next ids).  Vertex v sits between input edges ein (before it,
+** counter-clockwise) and eout (after it) and moves linearly:
+** pos(v, t) = p0 + vel (t - t0) for t >= t0.  The wavefront piece v -> v.next
+** lies on the offset line of v.eout.  A vertex never changes after creation:
+** an event kills vertices and creates new ones, so "piece (a, b) still
+** exists" is simply "a alive and a.next == b".
+**
+** Events.  Each alive vertex carries its earliest candidate event in the
+** queue: the collapse of its outgoing piece (edge event) or, if reflex, its
+** first hit of a piece of its own cycle (split event; brute force over the
+** cycle).  Candidates stay exact under changes: a changed piece is a new
+** piece, so after each step the reflex vertices of the touched cycles are
+** tested against the new pieces only, and fully recomputed only when their
+** target piece disappeared.
+**
+** Resolution (the heart of the reference).  All events within the time
+** tolerance of the earliest one form a group.  The group is resolved by
+** geometry, not by event type, which makes every degenerate combination
+** (multi-split, vanishing triangles and components, parallel edges meeting,
+** several events at one point) one code path:
+**   1. nodes: cluster the event points (distance tolerance);
+**   2. every vertex of the touched cycles within tolerance of a node arrives
+**      there; every piece passing through a node is cut there (pinch);
+**   3. the cycles become directed sub-pieces between points (nodes or
+**      untouched vertices); zero-length sub-pieces vanish (edge events);
+**      two opposite sub-pieces between the same two nodes cancel and leave a
+**      skeleton arc (parallel edges that met);
+**   4. at each node the remaining incoming and outgoing sub-pieces are
+**      paired: an incoming one continues with the first outgoing one
+**      clockwise from it (the wavefront interior lies in that sector), and
+**      each pair becomes a new wavefront vertex;
+**   5. a pair of antiparallel edges (a zero-width spike) means a vertex
+**      lies on a piece without being a node yet: it is made a node and the
+**      group is resolved again.
+** Collinear edges of different weight that become adjacent cannot share a
+** moving vertex (000, section 1): the losing edge (higher weight by default,
+** lower with --collinear higher) is removed at once, leaving an arc along it
+** at the current time, and its far neighbour is joined to the winner.
+**
+** Tolerances: WK_TOL_REL times the polygon's scale for distances, divided by
+** the largest weight for times (wskel.h).
+*/
+#include "../variant.h"
+#include "event_queue.h"
+#include "kinetics.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TWO_PI 6.283185307179586476925286766559
+
+enum { EV_NONE = 0, EV_EDGE = 1, EV_SPLIT = 2 };
+
+typedef struct nv_vertex {
+    wk_point p0, vel;  /* position at t0 and velocity (distance per time) */
+    double t0;         /* creation time */
+    uint32_t prev, next;
+    uint32_t ein, eout;/* input edges before / after (stored numbering) */
+    uint32_t node;     /* skeleton node where it started */
+    uint8_t alive, reflex, vkind;
+    uint8_t fresh;     /* created in the current group, candidate not yet computed */
+    uint32_t cand_next;/* next when the candidate was computed */
+    uint8_t ev_kind;   /* candidate event */
+    double ev_t;
+    wk_point ev_p;
+    uint32_t ev_a, ev_b; /* edge event: ev_b = next; split: target piece a->b */
+    uint32_t at;       /* group scratch: node index or WK_NONE */
+    uint32_t seen;     /* group scratch: stamp of the last cycle walk */
+} nv_vertex;
+
+typedef struct nv_cluster {
+    wk_point p;
+    uint32_t sk;       /* skeleton node id, WK_NONE until committed */
+    uint32_t first, count; /* its sub-pieces' slots in the pairing arrays */
+    uint32_t arrive, reflex, pinches, pairs; /* for the counters */
+} nv_cluster;
+
+typedef struct nv_pinch { uint32_t piece; double s; uint32_t node; } nv_pinch;
+
+typedef struct nv_sub {
+    uint32_t from, to;   /* point: node index | NODE_BIT, or a vertex id */
+    uint32_t edge;
+    uint32_t piece;      /* start vertex of the piece it came from */
+    uint32_t tail, head; /* commit: vertex ids at its ends */
+    uint32_t pair_in;    /* index of the pair using it as incoming */
+    uint32_t pair_out;   /* ... as outgoing */
+    uint8_t dead;
+} nv_sub;
+
+typedef struct nv_pair { uint32_t in, out, node, vertex; } nv_pair;
+
+#define NODE_BIT 0x80000000u
+#define IS_NODE(p) (((p) & NODE_BIT) != 0)
+#define NODE_OF(p) ((p) & ~NODE_BIT)
+
+typedef struct naive {
+    wk_run *R;
+    const wk_polygon *P;
+    wk_skeleton *S;
+    wk_offset_line *L;
+    nv_vertex *v;
+    uint32_t nv, cap_v;
+    wk_event_queue Q;
+    double eps_d, eps_t, t_now;
+    uint32_t stamp;
+    /* group scratch, kept between groups */
+    uint32_t *seeds; uint32_t n_seeds, cap_seeds;
+    uint32_t *forced; uint32_t n_forced, cap_forced;
+    uint32_t *comp; uint32_t n_comp, cap_comp;
+    nv_cluster *cl; uint32_t n_cl, cap_cl;
+    nv_pinch *pin; uint32_t n_pin, cap_pin;
+    nv_sub *sub; uint32_t n_sub, cap_sub;
+    nv_pair *pair; uint32_t n_pair, cap_pair;
+    uint32_t *slot; uint32_t n_slot, cap_slot;
+    uint32_t *fresh; uint32_t n_fresh, cap_fresh;
+} naive;
+
+static wk_point pos_at(const nv_vertex *v, double t) {
+    double dt = t - v->t0;
+    return (wk_point){v->p0.x + v->vel.x * dt, v->p0.y + v->vel.y * dt};
+}
+
+static double dist2(wk_point a, wk_point b) {
+    double dx = a.x - b.x, dy = a.y - b.y;
+    return dx * dx + dy * dy;
+}
+
+/* ------------------------------------------------------------ vertices */
+
+static uint32_t new_vertex(naive *N, uint32_t ein, uint32_t eout, wk_point p, double t,
+                           uint32_t node) {
+    if (WK_GROW(N->R, N->v, N->cap_v, N->nv + 1) != WK_OK) return WK_NONE;
+    uint32_t id = N->nv++;
+    nv_vertex *x = &N->v[id];
+    memset(x, 0, sizeof *x);
+    x->ein = ein;
+    x->eout = eout;
+    x->p0 = p;
+    x->t0 = t;
+    x->node = node;
+    x->alive = 1;
+    x->fresh = 1;
+    x->prev = x->next = WK_NONE;
+    x->at = WK_NONE;
+    x->ev_kind = EV_NONE;
+    x->ev_t = INFINITY;
+    x->vkind = (uint8_t)wk_vertex_velocity(&N->L[ein], &N->L[eout], &x->vel);
+    x->reflex = x->vkind == WK_VEL_REGULAR && wk_is_reflex_turn(&N->L[ein], &N->L[eout]);
+    /* Snap the start onto both offset lines when that is well conditioned:
+    ** later constructions then depend on the input lines, not on the
+    ** rounding of the event that created the vertex. */
+    wk_point q;
+    if (x->vkind == WK_VEL_REGULAR && t > 0 && wk_offset_lines_meet(&N->L[ein], &N->L[eout], t, &q) &&
+        dist2(q, p) <= N->eps_d * N->eps_d)
+        x->p0 = q;
+    return id;
+}
+
+static wk_status add_arc(naive *N, uint32_t a, uint32_t b, uint32_t left, uint32_t right) {
+    if (a == b) return WK_OK; /* zero-length: nothing traced */
+    return wk_skeleton_add_arc(N->R, N->S, a, b, left, right);
+}
+
+/* Kill v at node sk: its arc runs from where it started to sk. */
+static wk_status terminate(naive *N, uint32_t v, uint32_t sk) {
+    nv_vertex *x = &N->v[v];
+    x->alive = 0;
+    wk_event_queue_remove(N->R, &N->Q, v);
+    return add_arc(N, x->node, sk, x->ein, x->eout);
+}
+
+/* -------------------------------------------------------------- events */
+
+/* Collapse time of the piece a -> a.next, relative motion along the edge. */
+static void edge_event(naive *N, uint32_t a, double *t, wk_point *p) {
+    const nv_vertex *A = &N->v[a], *B = &N->v[A->next];
+    const wk_offset_line *L = &N->L[A->eout];
+    double t0 = N->t_now;
+    wk_point pa = pos_at(A, t0), pb = pos_at(B, t0);
+    double d = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
+    double rate = (B->vel.x - A->vel.x) * L->ux + (B->vel.y - A->vel.y) * L->uy;
+    *t = INFINITY;
+    if (d <= N->eps_d && rate <= 0) {
+        *t = t0;
+    } else if (rate < 0) {
+        *t = t0 + (d > 0 ? d : 0) / -rate;
+    } else {
+        return;
+    }
+    wk_point qa = pos_at(A, *t), qb = pos_at(B, *t);
+    *p = (wk_point){0.5 * (qa.x + qb.x), 0.5 * (qa.y + qb.y)};
+}
+
+/* Does reflex vertex v hit piece a -> a.next before *best?  Updates the
+** candidate in place. */
+static void split_test(naive *N, uint32_t vi, uint32_t a, double *best, wk_point *bp,
+                       uint32_t *ta, uint32_t *tb) {
+    const nv_vertex *V = &N->v[vi], *A = &N->v[a];
+    uint32_t b = A->next;
+    if (a == vi || b == vi) return; /* its own pieces */
+    const nv_vertex *B = &N->v[b];
+    const wk_offset_line *L = &N->L[A->eout];
+    double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
+    if (rate >= -1e-12 * (L->w + fabs(V->vel.x) + fabs(V->vel.y))) return;
+    wk_point pv = pos_at(V, N->t_now);
+    double d0 = wk_offset_distance(L, pv, N->t_now);
+    if (d0 < -N->eps_d) return; /* already beyond the line: moving away */
+    double t = N->t_now + (d0 > 0 ? d0 : 0) / -rate;
+    if (t > *best) return;
+    wk_point p = pos_at(V, t), pa = pos_at(A, t), pb = pos_at(B, t);
+    double sa = (p.x - pa.x) * L->ux + (p.y - pa.y) * L->uy;
+    double sb = (pb.x - p.x) * L->ux + (pb.y - p.y) * L->uy;
+    if (sa < -N->eps_d || sb < -N->eps_d) return;
+    if (t == *best && *ta != WK_NONE && a > *ta) return; /* deterministic tie */
+    *best = t;
+    *bp = p;
+    *ta = a;
+    *tb = b;
+}
+
+static wk_status schedule(naive *N, uint32_t vi) {
+    nv_vertex *V = &N->v[vi];
+    double t = V->ev_t;
+    if (V->ev_kind == EV_NONE || !isfinite(t)) {
+        wk_event_queue_remove(N->R, &N->Q, vi);
+        return WK_OK;
+    }
+    if (t < N->t_now) t = N->t_now;
+    return wk_event_queue_set(N->R, &N->Q, vi, (wk_event_key){t, V->ev_kind});
+}
+
+/* Full recomputation of vi's candidate: edge event and, if reflex, a scan
+** of every piece of its cycle. */
+static void full_candidate(naive *N, uint32_t vi) {
+    nv_vertex *V = &N->v[vi];
+    double t;
+    wk_point p = {0, 0};
+    edge_event(N, vi, &t, &p);
+    V->ev_kind = isfinite(t) ? EV_EDGE : EV_NONE;
+    V->ev_t = t;
+    V->ev_p = p;
+    V->ev_a = vi;
+    V->ev_b = V->next;
+    V->cand_next = V->next;
+    V->fresh = 0;
+    if (!V->reflex) return;
+    double best = V->ev_t;
+    wk_point bp = p;
+    uint32_t ta = WK_NONE, tb = WK_NONE;
+    for (uint32_t a = V->next; a != vi; a = N->v[a].next) split_test(N, vi, a, &best, &bp, &ta, &tb);
+    if (ta != WK_NONE && best < V->ev_t) {
+        V->ev_kind = EV_SPLIT;
+        V->ev_t = best;
+        V->ev_p = bp;
+        V->ev_a = ta;
+        V->ev_b = tb;
+    }
+}
+
+static bool candidate_valid(const naive *N, const nv_vertex *V) {
+    if (V->ev_kind == EV_NONE) return true; /* nothing to lose */
+    const nv_vertex *A = &N->v[V->ev_a];
+    return A->alive && A->next == V->ev_b;
+}
+
+/* ------------------------------------------------------------ clusters */
+
+static uint32_t find_cluster(const naive *N, wk_point p) {
+    double e2 = N->eps_d * N->eps_d;
+    for (uint32_t k = 0; k < N->n_cl; k++)
+        if (dist2(N->cl[k].p, p) <= e2) return k;
+    return WK_NONE;
+}
+
+static wk_status add_cluster(naive *N, wk_point p, uint32_t *k) {
+    *k = find_cluster(N, p);
+    if (*k != WK_NONE) return WK_OK;
+    if (WK_GROW(N->R, N->cl, N->cap_cl, N->n_cl + 1) != WK_OK) return N->R->err.code;
+    N->cl[N->n_cl] = (nv_cluster){p, WK_NONE, 0, 0, 0, 0, 0, 0};
+    *k = N->n_cl++;
+    return WK_OK;
+}
+
+static wk_status push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint32_t x) {
+    if (wk_grow(R, (void **)a, cap, *n + 1, sizeof **a) != WK_OK) return R->err.code;
+    (*a)[(*n)++] = x;
+    return WK_OK;
+}
+
+/* ---------------------------------------------------------- resolution */
+
+static double angle_of(const wk_offset_line *L, bool incoming) {
+    return incoming ? atan2(-L->uy, -L->ux) : atan2(L->uy, L->ux);
+}
+
+/* Clockwise turn from angle a to angle b in (0, 2 pi]. */
+static double cw_turn(double a, double b) {
+    double d = a - b;
+    while (d <= 1e-13) d += TWO_PI;
+    while (d > TWO_PI + 1e-13) d -= TWO_PI;
+    return d;
+}
+
+static wk_point point_pos(const naive *N, uint32_t pt, double t) {
+    return IS_NODE(pt) ? N->cl[NODE_OF(pt)].p : pos_at(&N->v[pt], t);
+}
+
+static int cmp_pinch(const void *a, const void *b) {
+    const nv_pinch *x = a, *y = b;
+    if (x->piece != y->piece) return x->piece < y->piece ? -1 : 1;
+    if (x->s != y->s) return x->s < y->s ? -1 : 1;
+    return x->node < y->node ? -1 : x->node > y->node;
+}
+
+/* Walk the cycles of the seeds (and forced vertices) into N->comp. */
+static wk_status collect_cycles(naive *N) {
+    N->stamp++;
+    N->n_comp = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        uint32_t n = pass ? N->n_forced : N->n_seeds;
+        const uint32_t *src = pass ? N->forced : N->seeds;
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t s = src[i];
+            if (N->v[s].seen == N->stamp) continue;
+            uint32_t u = s;
+            do {
+                N->v[u].seen = N->stamp;
+                N->v[u].at = WK_NONE;
+                if (push_u32(N->R, &N->comp, &N->n_comp, &N->cap_comp, u) != WK_OK)
+                    return N->R->err.code;
+                u = N->v[u].next;
+            } while (u != s);
+        }
+    }
+    return WK_OK;
+}
+
+static wk_status add_sub(naive *N, uint32_t from, uint32_t to, uint32_t edge, uint32_t piece) {
+    if (from == to) return WK_OK; /* zero length: this piece collapsed */
+    if (WK_GROW(N->R, N->sub, N->cap_sub, N->n_sub + 1) != WK_OK) return N->R->err.code;
+    N->sub[N->n_sub++] = (nv_sub){from, to, edge, piece, WK_NONE, WK_NONE, WK_NONE, WK_NONE, 0};
+    return WK_OK;
+}
+
+/* Order sub-pieces by their unordered pair of end points. */
+static int cmp_sub_key(const naive *N, uint32_t i, uint32_t j) {
+    const nv_sub *a = &N->sub[i], *b = &N->sub[j];
+    uint32_t a0 = a->from < a->to ? a->from : a->to, a1 = a->from ^ a->to ^ a0;
+    uint32_t b0 = b->from < b->to ? b->from : b->to, b1 = b->from ^ b->to ^ b0;
+    if (a0 != b0) return a0 < b0 ? -1 : 1;
+    if (a1 != b1) return a1 < b1 ? -1 : 1;
+    return 0;
+}
+
+/* Heap sort of sub-piece ids by end points, ids breaking ties (qsort has
+** no context argument and the order must be deterministic). */
+static bool sub_less(const naive *N, uint32_t i, uint32_t j) {
+    int c = cmp_sub_key(N, i, j);
+    return c ? c < 0 : i < j;
+}
+static void sift(const naive *N, uint32_t *a, uint32_t i, uint32_t n) {
+    for (;;) {
+        uint32_t c = 2 * i + 1;
+        if (c >= n) return;
+        if (c + 1 < n && sub_less(N, a[c], a[c + 1])) c++;
+        if (!sub_less(N, a[i], a[c])) return;
+        uint32_t x = a[i];
+        a[i] = a[c];
+        a[c] = x;
+        i = c;
+    }
+}
+static void sort_by_endpoints(const naive *N, uint32_t *a, uint32_t n) {
+    for (uint32_t i = n / 2; i-- > 0;) sift(N, a, i, n);
+    for (uint32_t m = n; m > 1; m--) {
+        uint32_t x = a[0];
+        a[0] = a[m - 1];
+        a[m - 1] = x;
+        sift(N, a, 0, m - 1);
+    }
+}
+
+/* Plan the group: clusters, arrivals, pinches, sub-pieces, cancellation and
+** pairing.  Returns WK_OK with *again set when a spike forced a new node. */
+static wk_status plan(naive *N, double t, bool *again) {
+    wk_run *R = N->R;
+    *again = false;
+    N->n_cl = N->n_pin = N->n_sub = N->n_pair = 0;
+    for (uint32_t i = 0; i < N->n_seeds; i++) {
+        uint32_t k;
+        if (add_cluster(N, N->v[N->seeds[i]].ev_p, &k) != WK_OK) return R->err.code;
+    }
+    for (uint32_t i = 0; i < N->n_forced; i++) {
+        uint32_t k;
+        if (add_cluster(N, pos_at(&N->v[N->forced[i]], t), &k) != WK_OK) return R->err.code;
+    }
+    if (collect_cycles(N) != WK_OK) return R->err.code;
+    /* arrivals */
+    for (uint32_t i = 0; i < N->n_comp; i++) {
+        nv_vertex *u = &N->v[N->comp[i]];
+        u->at = find_cluster(N, pos_at(u, t));
+    }
+    for (uint32_t i = 0; i < N->n_seeds; i++) {
+        nv_vertex *u = &N->v[N->seeds[i]];
+        if (u->at == WK_NONE) u->at = find_cluster(N, u->ev_p);
+        if (u->ev_kind == EV_EDGE && N->v[u->next].at == WK_NONE) N->v[u->next].at = u->at;
+    }
+    /* pinches: a node inside a piece cuts it */
+    for (uint32_t i = 0; i < N->n_comp; i++) {
+        uint32_t a = N->comp[i];
+        const nv_vertex *A = &N->v[a], *B = &N->v[A->next];
+        wk_point pa = pos_at(A, t), pb = pos_at(B, t);
+        const wk_offset_line *L = &N->L[A->eout];
+        double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
+        for (uint32_t k = 0; k < N->n_cl; k++) {
+            if (k == A->at || k == B->at) continue;
+            wk_point q = N->cl[k].p;
+            double s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
+            if (s <= N->eps_d || s >= len - N->eps_d) continue;
+            double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
+            if (fabs(off) > N->eps_d) continue;
+            if (WK_GROW(R, N->pin, N->cap_pin, N->n_pin + 1) != WK_OK) return R->err.code;
+            N->pin[N->n_pin++] = (nv_pinch){a, s, k};
+        }
+    }
+    if (N->n_pin > 1) qsort(N->pin, N->n_pin, sizeof *N->pin, cmp_pinch);
+    /* sub-pieces of every piece that touches a node */
+    for (uint32_t i = 0; i < N->n_comp; i++) {
+        uint32_t a = N->comp[i];
+        const nv_vertex *A = &N->v[a];
+        uint32_t b = A->next;
+        /* pinches are sorted by piece id: binary search this piece's run */
+        uint32_t lo = 0, hi = N->n_pin;
+        while (lo < hi) {
+            uint32_t mid = lo + (hi - lo) / 2;
+            if (N->pin[mid].piece < a) lo = mid + 1;
+            else hi = mid;
+        }
+        uint32_t pi0 = lo, pi1 = pi0;
+        while (pi1 < N->n_pin && N->pin[pi1].piece == a) pi1++;
+        if (A->at == WK_NONE && N->v[b].at == WK_NONE && pi1 == pi0) continue;
+        uint32_t from = A->at != WK_NONE ? (A->at | NODE_BIT) : a;
+        for (uint32_t j = pi0; j < pi1; j++) {
+            uint32_t to = N->pin[j].node | NODE_BIT;
+            if (add_sub(N, from, to, A->eout, a) != WK_OK) return R->err.code;
+            from = to;
+        }
+        uint32_t to = N->v[b].at != WK_NONE ? (N->v[b].at | NODE_BIT) : b;
+        if (add_sub(N, from, to, A->eout, a) != WK_OK) return R->err.code;
+    }
+    /* cancellation: opposite sub-pieces between the same two nodes */
+    if (N->n_sub > 1) {
+        if (wk_grow(R, (void **)&N->slot, &N->cap_slot, N->n_sub, sizeof *N->slot) != WK_OK)
+            return R->err.code;
+        N->n_slot = 0;
+        for (uint32_t i = 0; i < N->n_sub; i++)
+            if (IS_NODE(N->sub[i].from) && IS_NODE(N->sub[i].to)) N->slot[N->n_slot++] = i;
+        sort_by_endpoints(N, N->slot, N->n_slot);
+        for (uint32_t i = 0; i < N->n_slot; i++) {
+            nv_sub *a = &N->sub[N->slot[i]];
+            if (a->dead) continue;
+            for (uint32_t j = i + 1; j < N->n_slot && cmp_sub_key(N, N->slot[i], N->slot[j]) == 0; j++) {
+                nv_sub *b = &N->sub[N->slot[j]];
+                if (!b->dead && b->from == a->to && b->to == a->from) {
+                    a->dead = b->dead = 2; /* 2: cancelled, leaves an arc */
+                    break;
+                }
+            }
+        }
+    }
+    /* pairing at each node */
+    for (uint32_t k = 0; k < N->n_cl; k++) N->cl[k].count = 0;
+    for (uint32_t i = 0; i < N->n_sub; i++) {
+        nv_sub *s = &N->sub[i];
+        if (s->dead) continue;
+        if (IS_NODE(s->from)) N->cl[NODE_OF(s->from)].count++;
+        if (IS_NODE(s->to)) N->cl[NODE_OF(s->to)].count++;
+    }
+    uint32_t total = 0;
+    for (uint32_t k = 0; k < N->n_cl; k++) {
+        N->cl[k].first = total;
+        total += N->cl[k].count;
+        N->cl[k].count = 0;
+    }
+    if (wk_grow(R, (void **)&N->slot, &N->cap_slot, total + 1, sizeof *N->slot) != WK_OK)
+        return R->err.code;
+    for (uint32_t i = 0; i < N->n_sub; i++) {
+        nv_sub *s = &N->sub[i];
+        if (s->dead) continue;
+        if (IS_NODE(s->from)) {
+            nv_cluster *c = &N->cl[NODE_OF(s->from)];
+            N->slot[c->first + c->count++] = i; /* outgoing at from */
+        }
+        if (IS_NODE(s->to)) {
+            nv_cluster *c = &N->cl[NODE_OF(s->to)];
+            N->slot[c->first + c->count++] = i | NODE_BIT; /* incoming at to */
+        }
+    }
+    for (uint32_t k = 0; k < N->n_cl; k++) {
+        nv_cluster *c = &N->cl[k];
+        uint32_t nin = 0, nout = 0;
+        for (uint32_t j = 0; j < c->count; j++) (N->slot[c->first + j] & NODE_BIT) ? nin++ : nout++;
+        if (nin != nout)
+            return WK_FAIL(R, WK_EALGO, N->P->name, 0,
+                           "naive: inconsistent wavefront at (%.17g, %.17g), t = %.17g: %u pieces "
+                           "arrive, %u leave",
+                           c->p.x, c->p.y, t, nin, nout);
+        for (uint32_t j = 0; j < c->count; j++) {
+            uint32_t in = N->slot[c->first + j];
+            if (!(in & NODE_BIT)) continue;
+            in &= ~NODE_BIT;
+            double a = angle_of(&N->L[N->sub[in].edge], true);
+            uint32_t best = WK_NONE;
+            double bturn = INFINITY;
+            for (uint32_t m = 0; m < c->count; m++) {
+                uint32_t out = N->slot[c->first + m];
+                if (out & NODE_BIT) continue;
+                if (N->sub[out].pair_out != WK_NONE) continue;
+                double turn = cw_turn(a, angle_of(&N->L[N->sub[out].edge], false));
+                if (turn < bturn) {
+                    bturn = turn;
+                    best = out;
+                }
+            }
+            if (best == WK_NONE)
+                return WK_FAIL(R, WK_EALGO, N->P->name, 0,
+                               "naive: cannot pair wavefront pieces at (%.17g, %.17g), t = %.17g",
+                               c->p.x, c->p.y, t);
+            /* A turn of (nearly) 2 pi is a zero-width spike: some vertex lies on
+            ** one of the two sub-pieces; make the nearer far end a node. */
+            if (bturn > TWO_PI - 1e-9) {
+                nv_sub *si = &N->sub[in], *so = &N->sub[best];
+                wk_point pin = point_pos(N, si->from, t), pout = point_pos(N, so->to, t);
+                uint32_t far = dist2(pin, c->p) < dist2(pout, c->p) ? si->from : so->to;
+                if (IS_NODE(far))
+                    return WK_FAIL(R, WK_EALGO, N->P->name, 0,
+                                   "naive: unresolved spike at (%.17g, %.17g), t = %.17g", c->p.x,
+                                   c->p.y, t);
+                if (push_u32(R, &N->forced, &N->n_forced, &N->cap_forced, far) != WK_OK)
+                    return R->err.code;
+                *again = true;
+                return WK_OK;
+            }
+            if (WK_GROW(R, N->pair, N->cap_pair, N->n_pair + 1) != WK_OK) return R->err.code;
+            N->sub[in].pair_in = N->n_pair;
+            N->sub[best].pair_out = N->n_pair;
+            N->pair[N->n_pair++] = (nv_pair){in, best, k, WK_NONE};
+        }
+    }
+    return WK_OK;
+}
+
+static uint32_t sk_node(naive *N, uint32_t k, double t) {
+    nv_cluster *c = &N->cl[k];
+    if (c->sk == WK_NONE) {
+        uint32_t id;
+        if (wk_skeleton_add_node(N->R, N->S, c->p.x, c->p.y, t, &id) != WK_OK) return WK_NONE;
+        c->sk = id;
+    }
+    return c->sk;
+}
+
+static void link(naive *N, uint32_t a, uint32_t b) {
+    N->v[a].next = b;
+    N->v[b].prev = a;
+}
+
+static wk_status mark_fresh(naive *N, uint32_t v) {
+    return push_u32(N->R, &N->fresh, &N->n_fresh, &N->cap_fresh, v);
+}
+
+/* The collinear rule: vertex vi sits between parallel edges of different
+** weight.  The losing edge's piece is swept at once (an arc at time t along
+** it) and the winner is joined to the far neighbour. */
+static wk_status slide(naive *N, uint32_t vi, double t) {
+    wk_run *R = N->R;
+    for (int guard = 0; guard < 1 << 20; guard++) {
+        nv_vertex *V = &N->v[vi];
+        if (!V->alive || V->vkind != WK_VEL_COLLINEAR) return WK_OK;
+        double wi = N->L[V->ein].w, wo = N->L[V->eout].w;
+        bool out_loses = (N->R->opt.collinear == WK_COLLINEAR_LOWER) ? wo > wi : wo < wi;
+        uint32_t f = out_loses ? V->next : V->prev;
+        if (f == vi || (N->v[f].next == vi && N->v[f].prev == vi))
+            return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: degenerate cycle at t = %.17g", t);
+        nv_vertex *F = &N->v[f];
+        wk_point pf = pos_at(F, t);
+        uint32_t nf;
+        if (F->t0 == t) {
+            nf = F->node; /* F was born here, now: its node is this place */
+        } else {
+            if (wk_skeleton_add_node(R, N->S, pf.x, pf.y, t, &nf) != WK_OK) return R->err.code;
+        }
+        wk_event e = {t, pf.x, pf.y, V->ein, V->eout, WK_NONE};
+        wk_notify_event(R, WK_EV_COLLINEAR, &e);
+        uint32_t g;
+        V = &N->v[vi];
+        F = &N->v[f];
+        if (out_loses) {
+            /* piece V -> F on edge eout (face on its right), winner ein on its left */
+            if (add_arc(N, V->node, nf, V->ein, V->eout) != WK_OK) return R->err.code;
+            uint32_t ein = V->ein, p = V->prev, q = F->next, feout = F->eout;
+            if (terminate(N, f, nf) != WK_OK) return R->err.code;
+            V = &N->v[vi];
+            V->alive = 0;
+            wk_event_queue_remove(R, &N->Q, vi);
+            g = new_vertex(N, ein, feout, pf, t, nf);
+            if (g == WK_NONE) return R->err.code;
+            link(N, p, g);
+            link(N, g, q);
+        } else {
+            /* piece F -> V on edge ein (face on its right), winner eout on its left */
+            if (add_arc(N, nf, V->node, V->eout, V->ein) != WK_OK) return R->err.code;
+            uint32_t eout = V->eout, p = F->prev, q = V->next, fein = F->ein;
+            if (terminate(N, f, nf) != WK_OK) return R->err.code;
+            V = &N->v[vi];
+            V->alive = 0;
+            wk_event_queue_remove(R, &N->Q, vi);
+            g = new_vertex(N, fein, eout, pf, t, nf);
+            if (g == WK_NONE) return R->err.code;
+            link(N, p, g);
+            link(N, g, q);
+        }
+        if (mark_fresh(N, g) != WK_OK) return R->err.code;
+        vi = g;
+    }
+    return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: collinear rule does not terminate");
+}
+
+/* Follow pass-through pairs (same edge on both sides: no vertex) to the
+** vertex at the head of sub-piece s. */
+static uint32_t head_vertex(naive *N, uint32_t s) {
+    for (uint32_t guard = 0; guard <= N->n_sub; guard++) {
+        nv_sub *x = &N->sub[s];
+        if (!IS_NODE(x->to)) return x->to;
+        nv_pair *p = &N->pair[x->pair_in];
+        if (p->vertex != WK_NONE) return p->vertex;
+        s = p->out;
+    }
+    return WK_NONE;
+}
+
+static wk_status commit(naive *N, double t) {
+    wk_run *R = N->R;
+    /* skeleton nodes and arcs of arriving vertices */
+    for (uint32_t i = 0; i < N->n_comp; i++) {
+        uint32_t u = N->comp[i];
+        if (N->v[u].at == WK_NONE) continue;
+        uint32_t sk = sk_node(N, N->v[u].at, t);
+        if (sk == WK_NONE || terminate(N, u, sk) != WK_OK) return R->err.code;
+    }
+    /* cancelled pairs leave arcs: face of x->y on its right */
+    for (uint32_t i = 0; i < N->n_sub; i++) {
+        nv_sub *a = &N->sub[i];
+        if (a->dead != 2) continue;
+        a->dead = 1;
+        for (uint32_t j = 0; j < N->n_sub; j++) {
+            nv_sub *b = &N->sub[j];
+            if (b->dead == 2 && b->from == a->to && b->to == a->from) {
+                b->dead = 1;
+                uint32_t x = sk_node(N, NODE_OF(a->from), t), y = sk_node(N, NODE_OF(a->to), t);
+                if (x == WK_NONE || y == WK_NONE || add_arc(N, x, y, b->edge, a->edge) != WK_OK)
+                    return R->err.code;
+                break;
+            }
+        }
+    }
+    /* new vertices */
+    for (uint32_t i = 0; i < N->n_pair; i++) {
+        nv_pair *p = &N->pair[i];
+        uint32_t ein = N->sub[p->in].edge, eout = N->sub[p->out].edge;
+        if (ein == eout) continue; /* the piece just passes through */
+        uint32_t sk = sk_node(N, p->node, t);
+        if (sk == WK_NONE) return R->err.code;
+        uint32_t v = new_vertex(N, ein, eout, N->cl[p->node].p, t, sk);
+        if (v == WK_NONE || mark_fresh(N, v) != WK_OK) return R->err.code;
+        p = &N->pair[i];
+        p->vertex = v;
+    }
+    /* links: every live sub-piece joins the vertex at its tail to the one at
+    ** its head; pass-through pairs are followed */
+    for (uint32_t i = 0; i < N->n_sub; i++) {
+        nv_sub *s = &N->sub[i];
+        if (s->dead) continue;
+        uint32_t tail;
+        if (IS_NODE(s->from)) {
+            tail = N->pair[s->pair_out].vertex;
+            if (tail == WK_NONE) continue; /* inside a pass-through chain */
+        } else {
+            tail = s->from;
+        }
+        uint32_t head = head_vertex(N, i);
+        if (head == WK_NONE)
+            return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: broken wavefront cycle at t = %.17g", t);
+        link(N, tail, head);
+        /* tail's next changed: its cycle is walked again by refresh */
+        if (mark_fresh(N, tail) != WK_OK) return R->err.code;
+    }
+    wk_event e = {t, 0, 0, WK_NONE, WK_NONE, WK_NONE};
+    wk_notify_event(R, WK_EV_GROUP, &e);
+    return WK_OK;
+}
+
+/* Count what happened in this group for the observer (counts only). */
+static void count_group(naive *N, double t) {
+    wk_run *R = N->R;
+    for (uint32_t i = 0; i < N->n_comp; i++) {
+        const nv_vertex *u = &N->v[N->comp[i]];
+        if (u->at == WK_NONE) continue;
+        N->cl[u->at].arrive++;
+        N->cl[u->at].reflex += u->reflex;
+    }
+    for (uint32_t i = 0; i < N->n_pin; i++) N->cl[N->pin[i].node].pinches++;
+    for (uint32_t i = 0; i < N->n_pair; i++)
+        if (N->sub[N->pair[i].in].edge != N->sub[N->pair[i].out].edge) N->cl[N->pair[i].node].pairs++;
+    for (uint32_t k = 0; k < N->n_cl; k++) {
+        const nv_cluster *c = &N->cl[k];
+        wk_event e = {t, c->p.x, c->p.y, k, c->arrive, c->reflex};
+        if (c->reflex >= 2) wk_notify_event(R, WK_EV_MULTI_SPLIT, &e);
+        else if (c->reflex == 1 && c->pinches) wk_notify_event(R, WK_EV_SPLIT, &e);
+        else if (c->arrive >= 2) wk_notify_event(R, WK_EV_EDGE, &e);
+        if (c->pairs == 0 && c->arrive > 0) wk_notify_event(R, WK_EV_VANISH, &e);
+    }
+}
+
+/* After a group: new candidates for fresh vertices, their predecessors and
+** every reflex vertex of the touched cycles. */
+static wk_status refresh(naive *N) {
+    wk_run *R = N->R;
+    N->stamp++;
+    for (uint32_t i = 0; i < N->n_fresh; i++) {
+        uint32_t f = N->fresh[i];
+        if (!N->v[f].alive || N->v[f].seen == N->stamp) continue;
+        uint32_t u = f;
+        do {
+            nv_vertex *U = &N->v[u];
+            U->seen = N->stamp;
+            if (U->fresh || U->next != U->cand_next || !candidate_valid(N, U)) {
+                full_candidate(N, u);
+            } else if (U->reflex) {
+                /* only pieces next to fresh vertices are new */
+                double best = U->ev_t;
+                wk_point bp = U->ev_p;
+                uint32_t ta = WK_NONE, tb = WK_NONE;
+                for (uint32_t j = 0; j < N->n_fresh; j++) {
+                    uint32_t g = N->fresh[j];
+                    if (!N->v[g].alive) continue;
+                    split_test(N, u, g, &best, &bp, &ta, &tb);
+                    split_test(N, u, N->v[g].prev, &best, &bp, &ta, &tb);
+                }
+                if (ta != WK_NONE && best < U->ev_t) {
+                    U->ev_kind = EV_SPLIT;
+                    U->ev_t = best;
+                    U->ev_p = bp;
+                    U->ev_a = ta;
+                    U->ev_b = tb;
+                }
+            }
+            if (schedule(N, u) != WK_OK) return R->err.code;
+            u = U->next;
+        } while (u != f);
+    }
+    return WK_OK;
+}
+
+static wk_status check_cycles_sane(naive *N) {
+    for (uint32_t i = 0; i < N->n_fresh; i++) {
+        uint32_t f = N->fresh[i];
+        if (!N->v[f].alive) continue;
+        uint32_t len = 0, u = f;
+        do {
+            if (!N->v[u].alive || N->v[N->v[u].next].prev != u)
+                return WK_FAIL(N->R, WK_EALGO, N->P->name, 0,
+                               "naive: broken wavefront cycle after t = %.17g", N->t_now);
+            u = N->v[u].next;
+            if (++len > N->nv) break;
+        } while (u != f);
+        if (len < 3)
+            return WK_FAIL(N->R, WK_EALGO, N->P->name, 0,
+                           "naive: wavefront cycle of %u vertices after t = %.17g", len, N->t_now);
+    }
+    return WK_OK;
+}
+
+static wk_status process_group(naive *N, double t) {
+    wk_run *R = N->R;
+    N->n_forced = 0;
+    N->n_fresh = 0;
+    for (int round = 0;; round++) {
+        bool again;
+        for (uint32_t i = 0; i < N->n_sub; i++) N->sub[i].pair_in = N->sub[i].pair_out = WK_NONE;
+        if (plan(N, t, &again) != WK_OK) return R->err.code;
+        if (!again) break;
+        if (round > 64)
+            return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: too many spikes at t = %.17g", t);
+    }
+    count_group(N, t);
+    if (commit(N, t) != WK_OK) return R->err.code;
+    /* collinear rule for fresh vertices between parallel edges */
+    for (uint32_t i = 0; i < N->n_fresh; i++) {
+        uint32_t f = N->fresh[i];
+        if (N->v[f].alive && N->v[f].vkind == WK_VEL_COLLINEAR && slide(N, f, t) != WK_OK)
+            return R->err.code;
+        if (N->v[f].alive && N->v[f].vkind == WK_VEL_ANTIPARALLEL)
+            return WK_FAIL(R, WK_EALGO, N->P->name, 0,
+                           "naive: antiparallel wavefront vertex at t = %.17g", t);
+    }
+    if (check_cycles_sane(N) != WK_OK) return R->err.code;
+    return refresh(N);
+}
+
+static wk_status simulate(naive *N) {
+    wk_run *R = N->R;
+    const wk_polygon *P = N->P;
+    uint32_t n = P->n;
+    /* the initial wavefront: one vertex per input vertex */
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t id = new_vertex(N, (i + n - 1) % n, i, P->p[i], 0.0, i);
+        if (id == WK_NONE) return R->err.code;
+    }
+    for (uint32_t i = 0; i < n; i++) link(N, i, (i + 1) % n);
+    N->t_now = 0;
+    N->n_fresh = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        if (N->v[i].vkind == WK_VEL_COLLINEAR && slide(N, i, 0.0) != WK_OK) return R->err.code;
+        if (N->v[i].alive && N->v[i].vkind == WK_VEL_ANTIPARALLEL)
+            return WK_FAIL(R, WK_EALGO, P->name, 0, "naive: input vertex %u is a spike", i);
+    }
+    if (wk_event_queue_reserve(R, &N->Q, 2 * n + 16) != WK_OK) return R->err.code;
+    for (uint32_t i = 0; i < N->nv; i++) {
+        if (!N->v[i].alive) continue;
+        full_candidate(N, i);
+        if (schedule(N, i) != WK_OK) return R->err.code;
+    }
+    uint64_t same_time = 0;
+    while (N->Q.size) {
+        uint32_t first = wk_event_queue_pop(R, &N->Q);
+        double t = N->v[first].ev_t;
+        if (t < N->t_now) t = N->t_now;
+        same_time = (t <= N->t_now + N->eps_t) ? same_time + 1 : 0;
+        if (same_time > 4 * (uint64_t)N->nv + 64)
+            return WK_FAIL(R, WK_EALGO, P->name, 0, "naive: no progress at t = %.17g", t);
+        N->t_now = t;
+        N->n_seeds = 0;
+        if (push_u32(R, &N->seeds, &N->n_seeds, &N->cap_seeds, first) != WK_OK) return R->err.code;
+        while (N->Q.size) {
+            uint32_t id = wk_event_queue_peek(&N->Q);
+            if (N->Q.key[id].time > t + N->eps_t) break;
+            wk_event_queue_pop(R, &N->Q);
+            if (push_u32(R, &N->seeds, &N->n_seeds, &N->cap_seeds, id) != WK_OK)
+                return R->err.code;
+        }
+        if (process_group(N, t) != WK_OK) return R->err.code;
+    }
+    for (uint32_t i = 0; i < N->nv; i++)
+        if (N->v[i].alive)
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "naive: wavefront vertex %u still alive when the queue ran empty", i);
+    return WK_OK;
+}
+
+static wk_status naive_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
+    naive N;
+    memset(&N, 0, sizeof N);
+    N.R = R;
+    N.P = P;
+    wk_event_queue_init(&N.Q);
+    double wmax = 0;
+    for (uint32_t i = 0; i < P->n; i++) wmax = P->w[i] > wmax ? P->w[i] : wmax;
+    N.eps_d = WK_TOL_REL * wk_polygon_scale(P);
+    N.eps_t = N.eps_d / wmax;
+    wk_status st = WK_OK;
+    N.L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
+    if (!N.L) {
+        st = R->err.code;
+        goto done;
+    }
+    for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge(P, i, &N.L[i]);
+    if ((st = wk_skeleton_new(R, P, &N.S)) != WK_OK) goto done;
+    st = simulate(&N);
+done:
+    wk_event_queue_clear(R, &N.Q);
+    WK_FREE_ARRAY(R, N.L, P->n);
+    WK_FREE_ARRAY(R, N.v, N.cap_v);
+    WK_FREE_ARRAY(R, N.seeds, N.cap_seeds);
+    WK_FREE_ARRAY(R, N.forced, N.cap_forced);
+    WK_FREE_ARRAY(R, N.comp, N.cap_comp);
+    WK_FREE_ARRAY(R, N.cl, N.cap_cl);
+    WK_FREE_ARRAY(R, N.pin, N.cap_pin);
+    WK_FREE_ARRAY(R, N.sub, N.cap_sub);
+    WK_FREE_ARRAY(R, N.pair, N.cap_pair);
+    WK_FREE_ARRAY(R, N.slot, N.cap_slot);
+    WK_FREE_ARRAY(R, N.fresh, N.cap_fresh);
+    if (st != WK_OK) {
+        wk_skeleton_free(R, N.S);
+        return st;
+    }
+    *out = N.S;
+    return WK_OK;
+}
+
+const wk_variant wk_variant_naive = {
+    "naive",
+    "reference: event-driven wavefront with brute-force split detection",
+    WK_VARIANT_WEIGHTS,
+    naive_run,
+};

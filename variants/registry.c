@@ -1,0 +1,23 @@
+/*
+** registry.c: the static const list of variants (Redis's backend table).
+** To add a variant: declare it in variant.h, list it here, add its folder's
+** sources to the Makefile's VARIANT_SRC.
+*/
+#include "variant.h"
+
+#include <string.h>
+
+static const wk_variant *const registry[] = {
+    &wk_variant_naive,
+    NULL,
+};
+
+const wk_variant *wk_variant_find(const char *name) {
+    for (size_t i = 0; registry[i]; i++)
+        if (strcmp(registry[i]->name, name) == 0) return registry[i];
+    return NULL;
+}
+
+const wk_variant *wk_variant_at(size_t i) {
+    return i < sizeof registry / sizeof registry[0] - 1 ? registry[i] : NULL;
+}
