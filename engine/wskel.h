@@ -265,6 +265,11 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
 /* Write .wpoly (counter-clockwise, as stored). */
 wk_status wk_polygon_write_wpoly(wk_run *R, FILE *f, const wk_polygon *P);
 void wk_polygon_free(wk_run *R, wk_polygon *P);
+/* Check an existing polygon (e.g. one built by hand or modified) with the
+** checks of wk_polygon_from_arrays, on the stored order (so messages use
+** stored numbering, without lines), plus: stored counter-clockwise, r up to
+** date.  WK_OK or WK_EINPUT; uses O(n) scratch memory (may fail WK_ENOMEM). */
+wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P);
 /* Input numbering.  Stored vertex j is input vertex P->input_index[j]; stored
 ** edge j (p[j] -> p[j+1]) is input edge wk_polygon_input_edge(P, j), where
 ** input edge i runs from input vertex i to input vertex i+1.  Writers emit
@@ -285,6 +290,12 @@ bool wk_polygon_is_reflex(const wk_polygon *P, uint32_t i);
 int wk_orient2d(wk_point a, wk_point b, wk_point c, bool *exact_used);
 /* Unfiltered double evaluation, for benchmarks and tests only. */
 int wk_orient2d_fast(wk_point a, wk_point b, wk_point c);
+
+/* Twice the signed area of the closed polygon p[0..n) (the shoelace sum),
+** evaluated exactly with expansion arithmetic and rounded once at the end:
+** the sign is always right (assuming no overflow or underflow in the
+** products) and the value is within a few ulps. */
+double wk_shoelace_exact(const wk_point *p, uint32_t n);
 
 /* How two closed segments [a, b] and [c, d] meet, decided exactly (built on
 ** wk_orient2d).  TOUCH: they share exactly one point, which is an endpoint of

@@ -166,6 +166,10 @@ static uint32_t new_vertex(naive *N, uint32_t ein, uint32_t eout, wk_point p, do
 
 static wk_status add_arc(naive *N, uint32_t a, uint32_t b, uint32_t left, uint32_t right) {
     if (a == b) return WK_OK; /* zero-length: nothing traced */
+    if (left == right)
+        return WK_FAIL(N->R, WK_EALGO, N->P->name, 0,
+                       "naive: arc between nodes %u and %u would have face %u on both sides", a, b,
+                       left);
     return wk_skeleton_add_arc(N->R, N->S, a, b, left, right);
 }
 
@@ -272,6 +276,13 @@ static bool candidate_valid(const naive *N, const nv_vertex *V) {
 }
 
 /* ------------------------------------------------------------ clusters */
+
+static uint32_t find_cluster_within(const naive *N, wk_point p, double r) {
+    double e2 = r * r;
+    for (uint32_t k = 0; k < N->n_cl; k++)
+        if (dist2(N->cl[k].p, p) <= e2) return k;
+    return WK_NONE;
+}
 
 static uint32_t find_cluster(const naive *N, wk_point p) {
     double e2 = N->eps_d * N->eps_d;
@@ -406,7 +417,18 @@ static wk_status plan(naive *N, double t, bool *again) {
     /* arrivals */
     for (uint32_t i = 0; i < N->n_comp; i++) {
         nv_vertex *u = &N->v[N->comp[i]];
-        u->at = find_cluster(N, pos_at(u, t));
+        /* within the time tolerance a vertex covers |vel| eps_t: a fast
+        ** vertex that close to a node arrives there in the same instant */
+        double speed = fabs(u->vel.x) + fabs(u->vel.y);
+        u->at = find_cluster_within(N, pos_at(u, t), N->eps_d + speed * N->eps_t);
+    }
+    /* a free vertex whose two neighbours arrive at the same node closes a
+    ** triangle of zero size with it: it arrives too */
+    for (uint32_t i = 0; i < N->n_comp; i++) {
+        nv_vertex *u = &N->v[N->comp[i]];
+        uint32_t kp = N->v[u->prev].at;
+        if (u->at == WK_NONE && kp != WK_NONE && kp == N->v[u->next].at && u->prev != u->next)
+            u->at = kp;
     }
     for (uint32_t i = 0; i < N->n_seeds; i++) {
         nv_vertex *u = &N->v[N->seeds[i]];
@@ -417,18 +439,62 @@ static wk_status plan(naive *N, double t, bool *again) {
     for (uint32_t i = 0; i < N->n_comp; i++) {
         uint32_t a = N->comp[i];
         const nv_vertex *A = &N->v[a], *B = &N->v[A->next];
-        wk_point pa = pos_at(A, t), pb = pos_at(B, t);
+        /* an end that arrives at a node is taken at the node, so pinches and
+        ** arrivals see the same geometry */
+        wk_point pa = A->at != WK_NONE ? N->cl[A->at].p : pos_at(A, t);
+        wk_point pb = B->at != WK_NONE ? N->cl[B->at].p : pos_at(B, t);
         const wk_offset_line *L = &N->L[A->eout];
         double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
         for (uint32_t k = 0; k < N->n_cl; k++) {
             if (k == A->at || k == B->at) continue;
             wk_point q = N->cl[k].p;
             double s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
-            if (s <= N->eps_d || s >= len - N->eps_d) continue;
+            if (s < -N->eps_d || s > len + N->eps_d) continue;
             double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
             if (fabs(off) > N->eps_d) continue;
+            /* A node on the line within tolerance of an end of the piece: that
+            ** end arrives at the node (else the node would touch the piece
+            ** without cutting it, and the group would change nothing). */
+            if (s <= N->eps_d) {
+                if (A->at == WK_NONE) N->v[a].at = k;
+                continue;
+            }
+            if (s >= len - N->eps_d) {
+                if (B->at == WK_NONE) N->v[A->next].at = k;
+                continue;
+            }
             if (WK_GROW(R, N->pin, N->cap_pin, N->n_pin + 1) != WK_OK) return R->err.code;
             N->pin[N->n_pin++] = (nv_pinch){a, s, k};
+        }
+    }
+    /* Progress guarantee: a split seed always cuts its target piece at its
+    ** node, even when rounding put the node a little more than the tolerance
+    ** off the piece's line (detection and resolution must agree, or the
+    ** same event would be found again and again). */
+    for (uint32_t i = 0; i < N->n_seeds; i++) {
+        const nv_vertex *u = &N->v[N->seeds[i]];
+        if (u->ev_kind != EV_SPLIT || u->at == WK_NONE) continue;
+        uint32_t a = u->ev_a, k = u->at;
+        const nv_vertex *A = &N->v[a];
+        if (!A->alive || A->next != u->ev_b || A->seen != N->stamp) continue;
+        const nv_vertex *B = &N->v[A->next];
+        if (k == A->at || k == B->at) continue;
+        bool have = false;
+        for (uint32_t j = 0; j < N->n_pin; j++) have |= N->pin[j].piece == a && N->pin[j].node == k;
+        if (have) continue;
+        const wk_offset_line *L = &N->L[A->eout];
+        wk_point pa = A->at != WK_NONE ? N->cl[A->at].p : pos_at(A, t);
+        wk_point pb = B->at != WK_NONE ? N->cl[B->at].p : pos_at(B, t);
+        wk_point q = N->cl[k].p;
+        double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
+        double sq = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
+        if (sq <= N->eps_d) {
+            N->v[a].at = k;
+        } else if (sq >= len - N->eps_d) {
+            N->v[A->next].at = k;
+        } else {
+            if (WK_GROW(R, N->pin, N->cap_pin, N->n_pin + 1) != WK_OK) return R->err.code;
+            N->pin[N->n_pin++] = (nv_pinch){a, sq, k};
         }
     }
     if (N->n_pin > 1) qsort(N->pin, N->n_pin, sizeof *N->pin, cmp_pinch);
@@ -470,7 +536,9 @@ static wk_status plan(naive *N, double t, bool *again) {
             for (uint32_t j = i + 1; j < N->n_slot && cmp_sub_key(N, N->slot[i], N->slot[j]) == 0; j++) {
                 nv_sub *b = &N->sub[N->slot[j]];
                 if (!b->dead && b->from == a->to && b->to == a->from) {
-                    a->dead = b->dead = 2; /* 2: cancelled, leaves an arc */
+                    /* 2: cancelled, leaves an arc; 1: one edge folded onto
+                    ** itself within tolerance, which traces nothing */
+                    a->dead = b->dead = a->edge == b->edge ? 1 : 2;
                     break;
                 }
             }
@@ -801,6 +869,14 @@ static wk_status process_group(naive *N, double t) {
         if (round > 64)
             return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: too many spikes at t = %.17g", t);
     }
+#ifdef NAIVE_DEBUG
+    if (getenv("NAIVE_TRACE") && t >= atof(getenv("NAIVE_TRACE"))) {
+        fprintf(stderr, "PLAN t=%.17g clusters %u subs %u pairs %u pins %u\n", t, N->n_cl, N->n_sub, N->n_pair, N->n_pin);
+        for (uint32_t k = 0; k < N->n_cl; k++) fprintf(stderr, " cl %u %.17g %.17g\n", k, N->cl[k].p.x, N->cl[k].p.y);
+        for (uint32_t i = 0; i < N->n_sub; i++) fprintf(stderr, " sub %u: %x -> %x e%u dead %d  ang %.6f\n", i, N->sub[i].from, N->sub[i].to, N->sub[i].edge, N->sub[i].dead, atan2(N->L[N->sub[i].edge].uy, N->L[N->sub[i].edge].ux));
+        for (uint32_t i = 0; i < N->n_pair; i++) fprintf(stderr, " pair %u: in %u out %u node %u\n", i, N->pair[i].in, N->pair[i].out, N->pair[i].node);
+    }
+#endif
     count_group(N, t);
     if (commit(N, t) != WK_OK) return R->err.code;
     /* collinear rule for fresh vertices between parallel edges */
@@ -812,7 +888,18 @@ static wk_status process_group(naive *N, double t) {
             return WK_FAIL(R, WK_EALGO, N->P->name, 0,
                            "naive: antiparallel wavefront vertex at t = %.17g", t);
     }
-    if (check_cycles_sane(N) != WK_OK) return R->err.code;
+    if (check_cycles_sane(N) != WK_OK) {
+#ifdef NAIVE_DEBUG
+        fprintf(stderr, "group t=%.17g seeds %u clusters %u subs %u pairs %u pins %u\n", t, N->n_seeds, N->n_cl, N->n_sub, N->n_pair, N->n_pin);
+        for (uint32_t i = 0; i < N->n_seeds; i++) { nv_vertex *u = &N->v[N->seeds[i]]; fprintf(stderr, " seed %u kind %d t %.17g p %.17g %.17g a %u b %u reflex %d ein %u eout %u at %u\n", N->seeds[i], u->ev_kind, u->ev_t, u->ev_p.x, u->ev_p.y, u->ev_a, u->ev_b, u->reflex, u->ein, u->eout, u->at); }
+        for (uint32_t k = 0; k < N->n_cl; k++) fprintf(stderr, " cl %u %.17g %.17g\n", k, N->cl[k].p.x, N->cl[k].p.y);
+        for (uint32_t i = 0; i < N->n_sub; i++) fprintf(stderr, " sub %u: %x -> %x e%u dead %d\n", i, N->sub[i].from, N->sub[i].to, N->sub[i].edge, N->sub[i].dead);
+        for (uint32_t i = 0; i < N->n_pair; i++) fprintf(stderr, " pair %u: in %u out %u node %u v %u\n", i, N->pair[i].in, N->pair[i].out, N->pair[i].node, N->pair[i].vertex);
+        for (uint32_t i = 0; i < N->n_comp; i++) { nv_vertex *u = &N->v[N->comp[i]]; if (u->at != WK_NONE) fprintf(stderr, " comp %u at %u\n", N->comp[i], u->at);}
+        fprintf(stderr, " comp size %u\n", N->n_comp);
+#endif
+        return R->err.code;
+    }
     return refresh(N);
 }
 
@@ -845,7 +932,7 @@ static wk_status simulate(naive *N) {
         double t = N->v[first].ev_t;
         if (t < N->t_now) t = N->t_now;
         same_time = (t <= N->t_now + N->eps_t) ? same_time + 1 : 0;
-        if (same_time > 4 * (uint64_t)N->nv + 64)
+        if (same_time > 4 * (uint64_t)P->n + 64)
             return WK_FAIL(R, WK_EALGO, P->name, 0, "naive: no progress at t = %.17g", t);
         N->t_now = t;
         N->n_seeds = 0;
@@ -857,6 +944,15 @@ static wk_status simulate(naive *N) {
             if (push_u32(R, &N->seeds, &N->n_seeds, &N->cap_seeds, id) != WK_OK)
                 return R->err.code;
         }
+#ifdef NAIVE_DEBUG
+        if (same_time > 3 && same_time < 8) {
+            fprintf(stderr, "group t=%.17g seeds %u\n", t, N->n_seeds);
+            for (uint32_t i = 0; i < N->n_seeds; i++) { nv_vertex *u = &N->v[N->seeds[i]]; wk_point q = pos_at(u, t);
+                { nv_vertex *A = &N->v[u->ev_a], *B = &N->v[u->ev_b]; const wk_offset_line *L = &N->L[A->eout]; wk_point pa = pos_at(A, t), pb = pos_at(B, t);
+                  double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy, s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy, off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
+                  fprintf(stderr, "  target len %.3g s %.3g off %.3g eps %.3g A.t0 %.17g B.t0 %.17g A.vel %g %g A.reflex %d aein %u aeout %u\n", len, s, off, N->eps_d, A->t0, B->t0, A->vel.x, A->vel.y, A->reflex, A->ein, A->eout); } fprintf(stderr, " seed %u kind %d t0 %.17g p %.17g %.17g pos %.17g %.17g a %u b %u reflex %d vk %d ein %u eout %u prev %u next %u vel %g %g\n", N->seeds[i], u->ev_kind, u->t0, u->ev_p.x, u->ev_p.y, q.x, q.y, u->ev_a, u->ev_b, u->reflex, u->vkind, u->ein, u->eout, u->prev, u->next, u->vel.x, u->vel.y); }
+        }
+#endif
         if (process_group(N, t) != WK_OK) return R->err.code;
     }
     for (uint32_t i = 0; i < N->nv; i++)

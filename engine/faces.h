@@ -1,0 +1,63 @@
+/*
+** faces.h: derived views of a finished skeleton that the validator and the
+** writers share (engine-private; not part of the public API in wskel.h).
+**
+** A face is the region swept by one input edge's wavefront.  Its boundary,
+** as a node cycle, is the edge itself (node e -> node e+1) followed by the
+** path of arcs labelled e from node e+1 back to node e, each arc oriented so
+** that the face lies on its left: an arc with left == e is walked a -> b,
+** one with right == e is walked b -> a.  Every arc lies on exactly two face
+** cycles, once in each direction, so the cycles sum (as chains) to the
+** polygon boundary; the validator relies on this.
+**
+** wk_faces holds all n cycles in one compressed array, built in
+** O(arcs log(largest face)) by bucketing the arcs by edge.  wk_face_cycle
+** (wskel.h) builds a single face in O(arcs); calling it for every edge is
+** quadratic, so code that needs all faces uses wk_faces_build.
+*/
+#ifndef WK_FACES_H
+#define WK_FACES_H
+#include "wskel.h"
+
+typedef struct wk_faces {
+    uint32_t n;        /* faces = polygon edges */
+    uint32_t *start;   /* n + 1 offsets: face e is node[start[e] .. start[e+1]) */
+    uint32_t *node;    /* every cycle, face e's beginning with nodes e, e+1 */
+} wk_faces;
+
+/* Check that every arc has node ids < S->n_nodes, a != b, face ids < P->n and
+** left != right.  what prefixes the message (e.g. "validate (c): ").
+** Fails with WK_EINVALID naming the first bad arc. */
+wk_status wk_faces_check_ids(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                             const char *what);
+
+/* Build every face cycle of S (stored numbering), after checking the ids as
+** wk_faces_check_ids does.  On failure F is left empty (zeroed) and R->err
+** says which face is broken and why (WK_EINVALID, message prefixed by what),
+** or WK_ENOMEM.  Free with wk_faces_clear. */
+wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, wk_faces *F,
+                         const char *what);
+/* Free F's arrays; accepts a zeroed or cleared F. */
+void wk_faces_clear(wk_run *R, wk_faces *F);
+
+/* Signed area of a node cycle in the xy projection (positive when
+** counter-clockwise), computed relative to its first node. */
+double wk_cycle_area(const wk_skeleton *S, const uint32_t *cycle, uint32_t len);
+
+/* True if arc i is traced by a reflex wavefront vertex.  Oriented so that
+** time grows from a to b, the arc has the edge before its wavefront vertex
+** (counter-clockwise order) on its left and the edge after it on its right;
+** the vertex is reflex iff those edges turn right: cross(dir left, dir
+** right) < 0.  Arcs at constant time (ridges between parallel edges) and arcs
+** with invalid labels count as convex.  A drawing aid: plain doubles. */
+bool wk_arc_is_reflex(const wk_polygon *P, const wk_skeleton *S, uint32_t i);
+
+/* Inverse of the input numbering: vertex_of[i] is the stored vertex that is
+** input vertex i, edge_of[i] the stored edge that is input edge i (both
+** n-element arrays allocated through R; free with WK_FREE_ARRAY(R, x, P->n)).
+** Either pointer may be NULL when not wanted.  WK_EALGO if the polygon's
+** numbering is not a permutation (defensive: the polygon module's bug). */
+wk_status wk_input_order(wk_run *R, const wk_polygon *P, uint32_t **vertex_of,
+                         uint32_t **edge_of);
+
+#endif

@@ -1,0 +1,765 @@
+/*
+** polygon_read.c: the polygon readers, .wpoly and GraphML.
+**
+** .wpoly, line oriented:
+**     # comment lines start with '#' (after optional blanks)
+**     n                  vertex count, a positive integer, alone on its line
+**     x y [w]            n lines; w (the weight of the edge from this vertex
+**                        to the next) defaults to 1
+** Blank lines are ignored anywhere.  Numbers are C strtod syntax, and must be
+** finite.  Every message carries the line it is about.
+**
+** GraphML (Salzburg database, surfer2, monos): <key> elements map attribute
+** names to key ids; nodes carry <data key=ID> for "vertex-coordinate-x" and
+** "vertex-coordinate-y", edges optionally for "edge-weight" (default: the
+** key's <default>, else 1).  The edges must form one simple cycle through all
+** nodes; it is ordered from the first node in document order, leaving along
+** that node's first edge in document order.
+**
+** Both readers only collect arrays and leave every geometric check to
+** wk_polygon_from_arrays, passing the input line of each vertex (for GraphML
+** the line of its <node> element) so its messages point into the file.
+**
+** Memory: the file text and all arrays come from the run's allocator.
+** libxml2 allocates its document tree with its own allocator (changing that
+** would mean a process-wide xmlMemSetup, i.e. a mutable global); the tree is
+** freed before the reader returns, so it never outlives a call.
+*/
+#include "wskel.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <libxml/xmlerror.h>
+
+/* ---- whole-file input ---- */
+
+typedef struct text {
+    char *buf;  /* NUL-terminated: buf[len] == 0 */
+    size_t len;
+    size_t cap; /* allocated bytes, for the free */
+} text;
+
+static void text_free(wk_run *R, text *t) {
+    wk_realloc(R, t->buf, t->cap, 0);
+    t->buf = NULL;
+    t->len = t->cap = 0;
+}
+
+/* Reads f to its end.  On failure t is empty and R->err says why. */
+static wk_status slurp(wk_run *R, FILE *f, const char *name, text *t) {
+    errno = 0;
+    t->len = 0;
+    t->cap = 1 << 16;
+    t->buf = wk_realloc(R, NULL, 0, t->cap);
+    if (!t->buf) {
+        t->cap = 0;
+        return WK_ENOMEM;
+    }
+    for (;;) {
+        if (t->cap - t->len < 2) {
+            char *q = wk_realloc(R, t->buf, t->cap, 2 * t->cap);
+            if (!q) {
+                text_free(R, t);
+                return WK_ENOMEM;
+            }
+            t->buf = q;
+            t->cap *= 2;
+        }
+        size_t got = fread(t->buf + t->len, 1, t->cap - 1 - t->len, f);
+        t->len += got;
+        if (got == 0) break;
+    }
+    if (ferror(f)) {
+        int e = errno;
+        text_free(R, t);
+        return WK_FAIL(R, WK_EINPUT, name, 0, "read error: %s", e ? strerror(e) : "unknown");
+    }
+    t->buf[t->len] = '\0';
+    return WK_OK;
+}
+
+/* ---- numbers ---- */
+
+static bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+/* The whole of s[0..len) must be one finite number. */
+static bool parse_number(const char *s, size_t len, double *out) {
+    if (len == 0) return false;
+    char *end;
+    double v = strtod(s, &end);
+    if (end != s + len || !isfinite(v)) return false;
+    *out = v;
+    return true;
+}
+
+/* ---- .wpoly ---- */
+
+#define MAX_TOKENS 4 /* x y w, and one more to say "too many" */
+
+/* Splits the NUL-terminated line at blanks, terminating each token in place.
+** Returns the number of tokens (may exceed MAX_TOKENS; only the first
+** MAX_TOKENS are stored). */
+static int tokenize(char *s, char **tok, size_t *len) {
+    int count = 0;
+    for (;;) {
+        while (is_blank(*s)) s++;
+        if (!*s) return count;
+        char *start = s;
+        while (*s && !is_blank(*s)) s++;
+        if (count < MAX_TOKENS) {
+            tok[count] = start;
+            len[count] = (size_t)(s - start);
+        }
+        count++;
+        if (*s) *s++ = '\0';
+    }
+}
+
+/* Parses the vertex count; false if the token is not a positive integer.
+** Values above WK_POLYGON_MAX_N saturate at WK_POLYGON_MAX_N + 1. */
+static bool parse_count(const char *s, size_t len, uint32_t *n) {
+    uint64_t v = 0;
+    if (len == 0) return false;
+    for (size_t i = 0; i < len; i++) {
+        if (s[i] < '0' || s[i] > '9') return false;
+        v = v * 10 + (uint64_t)(s[i] - '0');
+        if (v > WK_POLYGON_MAX_N) v = (uint64_t)WK_POLYGON_MAX_N + 1;
+    }
+    if (v == 0) return false;
+    *n = (uint32_t)v;
+    return true;
+}
+
+typedef struct vertex_arrays {
+    uint32_t cap;
+    double *x, *y, *w;
+    long *line;
+} vertex_arrays;
+
+static wk_status vertex_arrays_alloc(wk_run *R, vertex_arrays *A, uint32_t cap) {
+    A->cap = cap;
+    A->x = WK_NEW_ARRAY(R, double, cap);
+    A->y = WK_NEW_ARRAY(R, double, cap);
+    A->w = WK_NEW_ARRAY(R, double, cap);
+    A->line = WK_NEW_ARRAY(R, long, cap);
+    return A->x && A->y && A->w && A->line ? WK_OK : WK_ENOMEM;
+}
+
+static void vertex_arrays_free(wk_run *R, vertex_arrays *A) {
+    WK_FREE_ARRAY(R, A->x, A->cap);
+    WK_FREE_ARRAY(R, A->y, A->cap);
+    WK_FREE_ARRAY(R, A->w, A->cap);
+    WK_FREE_ARRAY(R, A->line, A->cap);
+}
+
+/* Parses t (modified in place: tokens are terminated). */
+static wk_status parse_wpoly(wk_run *R, text *t, const char *name, wk_polygon **out) {
+    vertex_arrays A = {0, NULL, NULL, NULL, NULL};
+    wk_status st = WK_OK;
+    uint32_t n = 0, got = 0;
+    long count_line = 0, ln = 0;
+    char *s = t->buf, *end = t->buf + t->len;
+    if (t->len >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0) s += 3; /* UTF-8 byte order mark */
+    char *tok[MAX_TOKENS];
+    size_t tl[MAX_TOKENS];
+
+    /* The number of lines bounds the number of vertex lines, so a count of
+    ** 50 million on top of a three-line file allocates three entries. */
+    uint64_t nlines = 1;
+    for (const char *c = s; (c = memchr(c, '\n', (size_t)(end - c))) != NULL; c++) nlines++;
+
+    while (s < end || (s == end && ln == 0)) {
+        char *nl = memchr(s, '\n', (size_t)(end - s));
+        char *eol = nl ? nl : end;
+        *eol = '\0';
+        ln++;
+        char *line = s;
+        s = eol + 1;
+        while (is_blank(*line)) line++;
+        if (*line == '#' || *line == '\0') {
+            if (!nl) break;
+            continue;
+        }
+        int k = tokenize(line, tok, tl);
+        if (count_line == 0) {
+            count_line = ln;
+            if (k != 1 || !parse_count(tok[0], tl[0], &n)) {
+                st = WK_FAIL(R, WK_EINPUT, name, ln,
+                             "expected the vertex count, a positive integer alone on its line "
+                             "(got '%.40s'%s)",
+                             tok[0], k > 1 ? " and more" : "");
+                goto done;
+            }
+            if (n > WK_POLYGON_MAX_N) {
+                st = WK_FAIL(R, WK_EINPUT, name, ln,
+                             "too many vertices (%.40s; the limit is %u)", tok[0],
+                             WK_POLYGON_MAX_N);
+                goto done;
+            }
+            if (n < 3) {
+                st = WK_FAIL(R, WK_EINPUT, name, ln,
+                             "polygon needs at least 3 vertices (got %u)", n);
+                goto done;
+            }
+            if ((st = vertex_arrays_alloc(R, &A, n < nlines ? n : (uint32_t)nlines)) != WK_OK)
+                goto done;
+        } else if (got == n) {
+            st = WK_FAIL(R, WK_EINPUT, name, ln,
+                         "extra line: the count on line %ld announces %u vertices", count_line,
+                         n);
+            goto done;
+        } else {
+            if (k < 2 || k > 3) {
+                st = WK_FAIL(R, WK_EINPUT, name, ln,
+                             "expected 'x y [weight]' (got %d field%s)", k, k == 1 ? "" : "s");
+                goto done;
+            }
+            double v[3] = {0, 0, 1.0};
+            for (int i = 0; i < k; i++)
+                if (!parse_number(tok[i], tl[i], &v[i])) {
+                    st = WK_FAIL(R, WK_EINPUT, name, ln, "'%.40s%s' is not a finite number",
+                                 tok[i], tl[i] > 40 ? "..." : "");
+                    goto done;
+                }
+            A.x[got] = v[0];
+            A.y[got] = v[1];
+            A.w[got] = v[2];
+            A.line[got] = ln;
+            got++;
+        }
+        if (!nl) break;
+    }
+    if (count_line == 0) {
+        st = WK_FAIL(R, WK_EINPUT, name, ln > 0 ? ln : 1,
+                     "no vertex count: the input is empty or only comments");
+        goto done;
+    }
+    if (got < n) {
+        st = WK_FAIL(R, WK_EINPUT, name, count_line,
+                     "the count announces %u vertices but only %u vertex line%s follow%s", n,
+                     got, got == 1 ? "" : "s", got == 1 ? "s" : "");
+        goto done;
+    }
+    st = wk_polygon_from_arrays(R, n, A.x, A.y, A.w, name, A.line, out);
+done:
+    vertex_arrays_free(R, &A);
+    return st;
+}
+
+wk_status wk_polygon_read_wpoly(wk_run *R, FILE *f, const char *name, wk_polygon **out) {
+    *out = NULL;
+    text t;
+    wk_status st = slurp(R, f, name, &t);
+    if (st != WK_OK) return st;
+    st = parse_wpoly(R, &t, name, out);
+    text_free(R, &t);
+    return st;
+}
+
+/* ---- GraphML ----
+** Strings are read from the tree in place (xstr.s borrowed) whenever the
+** value is a single text node, which is every value without entity
+** references; only the others are copied (xstr.copy, xmlFree'd).  With a
+** copy per attribute, a million-vertex file spent seconds in malloc. */
+
+typedef struct xstr {
+    const xmlChar *s; /* NULL: absent */
+    xmlChar *copy;    /* owned copy backing s, or NULL when s is borrowed */
+} xstr;
+
+static void xstr_free(xstr *v) {
+    xmlFree(v->copy);
+    v->copy = NULL;
+    v->s = NULL;
+}
+
+static bool is_element(const xmlNode *e, const char *local) {
+    return e->type == XML_ELEMENT_NODE && xmlStrEqual(e->name, BAD_CAST local);
+}
+
+/* Attribute `name` without namespace (as xmlGetProp).  If libxml2 cannot
+** allocate a needed copy, the value reads as "" and fails as input. */
+static xstr attr_value(xmlNode *e, const char *name) {
+    xstr v = {NULL, NULL};
+    for (xmlAttr *a = e->properties; a; a = a->next) {
+        if (a->ns || !xmlStrEqual(a->name, BAD_CAST name)) continue;
+        xmlNode *c = a->children;
+        if (c && c->type == XML_TEXT_NODE && !c->next && c->content) {
+            v.s = c->content;
+        } else {
+            v.copy = xmlNodeListGetString(e->doc, c, 1);
+            v.s = v.copy ? v.copy : BAD_CAST "";
+        }
+        return v;
+    }
+    return v;
+}
+
+static bool attr_is(xmlNode *e, const char *name, const xmlChar *value) {
+    xstr v = attr_value(e, name);
+    bool eq = v.s && xmlStrEqual(v.s, value);
+    xstr_free(&v);
+    return eq;
+}
+
+/* The text content of element e (never NULL). */
+static xstr text_value(xmlNode *e) {
+    xstr v = {BAD_CAST "", NULL};
+    xmlNode *c = e->children;
+    if (!c) return v;
+    if (c->type == XML_TEXT_NODE && !c->next && c->content) {
+        v.s = c->content;
+    } else {
+        v.copy = xmlNodeGetContent(e);
+        if (v.copy) v.s = v.copy;
+    }
+    return v;
+}
+
+/* One GraphML attribute we read: its key id and default text. */
+typedef struct gkey {
+    xstr id;   /* id.s NULL if the file has no such key */
+    xstr dflt; /* <default> text, dflt.s NULL if none */
+} gkey;
+
+static void gkey_clear(gkey *k) {
+    xstr_free(&k->id);
+    xstr_free(&k->dflt);
+}
+
+/* Finds <key attr.name=NAME for=FOR|all> among the children of root. */
+static void find_key(xmlNode *root, const char *attr_name, const char *for_what, gkey *k) {
+    k->id = k->dflt = (xstr){NULL, NULL};
+    for (xmlNode *c = root->children; c; c = c->next) {
+        if (!is_element(c, "key") || !attr_is(c, "attr.name", BAD_CAST attr_name)) continue;
+        xstr f = attr_value(c, "for");
+        bool ok = !f.s || xmlStrEqual(f.s, BAD_CAST for_what) || xmlStrEqual(f.s, BAD_CAST "all");
+        xstr_free(&f);
+        if (!ok) continue;
+        k->id = attr_value(c, "id");
+        if (!k->id.s) continue;
+        for (xmlNode *d = c->children; d; d = d->next)
+            if (is_element(d, "default")) {
+                k->dflt = text_value(d);
+                break;
+            }
+        return;
+    }
+}
+
+static bool parse_text_number(const xmlChar *s, double *out) {
+    const char *b = (const char *)s;
+    while (*b == ' ' || *b == '\t' || *b == '\n' || *b == '\r') b++;
+    size_t len = strlen(b);
+    while (len > 0 && (b[len - 1] == ' ' || b[len - 1] == '\t' || b[len - 1] == '\n' ||
+                       b[len - 1] == '\r'))
+        len--;
+    if (len == 0 || len > 1000) return false;
+    char tmp[1001];
+    memcpy(tmp, b, len);
+    tmp[len] = '\0';
+    return parse_number(tmp, len, out);
+}
+
+/* K's value at element e, from its <data key=K> child or else K's default:
+** 1 when *v was set, 0 when there is neither, -1 when the text is not a
+** finite number (then bad holds it).  *where: the element the value came
+** from (for the line number). */
+static int key_number(xmlNode *e, const gkey *K, double *v, xmlNode **where, char *bad,
+                      size_t bad_size) {
+    *where = e;
+    if (!K->id.s) return 0;
+    xstr t = {NULL, NULL};
+    for (xmlNode *d = e->children; d && !t.s; d = d->next)
+        if (is_element(d, "data") && attr_is(d, "key", K->id.s)) {
+            *where = d;
+            t = text_value(d);
+        }
+    if (!t.s) {
+        if (!K->dflt.s) return 0;
+        t.s = K->dflt.s; /* borrowed from K */
+    }
+    bool ok = parse_text_number(t.s, v);
+    if (!ok) snprintf(bad, bad_size, "%.40s", (const char *)t.s);
+    xstr_free(&t);
+    return ok ? 1 : -1;
+}
+
+/* "node 'n3'" / "edge 'e3'" or, without an id, "edge 7 (from 'a' to 'b')".
+** Only for messages. */
+static const char *describe_element(xmlNode *e, const char *kind, uint32_t index, char *buf,
+                                    size_t size) {
+    xstr id = attr_value(e, "id");
+    if (id.s) {
+        snprintf(buf, size, "%s '%.60s'", kind, (const char *)id.s);
+    } else if (is_element(e, "edge")) {
+        xstr s = attr_value(e, "source"), t = attr_value(e, "target");
+        snprintf(buf, size, "%s %u (from '%.40s' to '%.40s')", kind, index,
+                 s.s ? (const char *)s.s : "?", t.s ? (const char *)t.s : "?");
+        xstr_free(&s);
+        xstr_free(&t);
+    } else {
+        snprintf(buf, size, "%s %u", kind, index);
+    }
+    xstr_free(&id);
+    return buf;
+}
+
+/* Node ids sorted for lookup: merge sort of node indices by id. */
+static uint32_t *sort_ids(const xstr *id, uint32_t *a, uint32_t *tmp, uint32_t n) {
+    for (size_t width = 1; width < n; width *= 2) {
+        for (size_t lo = 0; lo < n; lo += 2 * width) {
+            size_t mid = lo + width < n ? lo + width : n;
+            size_t hi = lo + 2 * width < n ? lo + 2 * width : n;
+            size_t i = lo, j = mid, k = lo;
+            while (i < mid && j < hi)
+                tmp[k++] = xmlStrcmp(id[a[j]].s, id[a[i]].s) < 0 ? a[j++] : a[i++];
+            while (i < mid) tmp[k++] = a[i++];
+            while (j < hi) tmp[k++] = a[j++];
+        }
+        uint32_t *t = a;
+        a = tmp;
+        tmp = t;
+    }
+    return a;
+}
+
+static uint32_t find_id(const xstr *id, const uint32_t *sorted, uint32_t n, const xmlChar *key) {
+    uint32_t lo = 0, hi = n;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        int c = xmlStrcmp(id[sorted[mid]].s, key);
+        if (c == 0) return sorted[mid];
+        if (c < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return WK_NONE;
+}
+
+typedef struct graph {
+    uint32_t nn, ne;      /* nodes, edges */
+    xmlNode **node, **edge;
+    xstr *id;             /* node ids */
+    uint32_t *idx, *tmp;  /* sort scratch */
+    uint32_t *src, *dst;  /* edge endpoints (node indices) */
+    double *nx, *ny, *ew; /* node coordinates, edge weights */
+    uint32_t *inc;        /* inc[2i], inc[2i+1]: the edges at node i */
+    uint32_t *deg;
+    vertex_arrays cyc;    /* the cycle, in order */
+} graph;
+
+static void graph_free(wk_run *R, graph *G) {
+    if (G->id)
+        for (uint32_t i = 0; i < G->nn; i++) xstr_free(&G->id[i]);
+    WK_FREE_ARRAY(R, G->node, G->nn);
+    WK_FREE_ARRAY(R, G->edge, G->ne);
+    WK_FREE_ARRAY(R, G->id, G->nn);
+    WK_FREE_ARRAY(R, G->idx, G->nn);
+    WK_FREE_ARRAY(R, G->tmp, G->nn);
+    WK_FREE_ARRAY(R, G->src, G->ne);
+    WK_FREE_ARRAY(R, G->dst, G->ne);
+    WK_FREE_ARRAY(R, G->nx, G->nn);
+    WK_FREE_ARRAY(R, G->ny, G->nn);
+    WK_FREE_ARRAY(R, G->ew, G->ne);
+    WK_FREE_ARRAY(R, G->inc, 2 * (size_t)G->nn);
+    WK_FREE_ARRAY(R, G->deg, G->nn);
+    vertex_arrays_free(R, &G->cyc);
+}
+
+/* Reads coordinate K of node i, failing with a message naming the node. */
+static wk_status node_coordinate(wk_run *R, const char *name, graph *G, uint32_t i,
+                                 const gkey *K, const char *attr_name, double *v) {
+    char bad[48], d[160];
+    xmlNode *where;
+    int got = key_number(G->node[i], K, v, &where, bad, sizeof bad);
+    if (got == 1) return WK_OK;
+    describe_element(G->node[i], "node", i, d, sizeof d);
+    if (got == 0) return WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where), "%s has no %s", d, attr_name);
+    return WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where), "%s: %s '%s' is not a finite number",
+                   d, attr_name, bad);
+}
+
+/* Everything after parsing: keys, nodes, edges, the cycle. */
+static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_polygon **out) {
+    char d1[160], d2[160], bad[48];
+    const gkey none = {{NULL, NULL}, {NULL, NULL}};
+    gkey kx = none, ky = none, kw = none, ka = none;
+    graph G;
+    memset(&G, 0, sizeof G);
+    wk_status st = WK_OK;
+    xmlNode *root = xmlDocGetRootElement(doc);
+    if (!root || !is_element(root, "graphml")) {
+        st = WK_FAIL(R, WK_EINPUT, name, root ? xmlGetLineNo(root) : 0,
+                     "the root element is <%s>, not <graphml>",
+                     root ? (const char *)root->name : "(none)");
+        goto done;
+    }
+    find_key(root, "vertex-coordinate-x", "node", &kx);
+    find_key(root, "vertex-coordinate-y", "node", &ky);
+    find_key(root, "edge-weight", "edge", &kw);
+    find_key(root, "edge-weight-additive", "edge", &ka);
+    xmlNode *graph_el = NULL;
+    for (xmlNode *c = root->children; c && !graph_el; c = c->next)
+        if (is_element(c, "graph")) graph_el = c;
+    if (!graph_el) {
+        st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(root), "no <graph> element in <graphml>");
+        goto done;
+    }
+    if (!kx.id.s || !ky.id.s) {
+        st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(root),
+                     "no <key for=\"node\" attr.name=\"%s\">",
+                     !kx.id.s ? "vertex-coordinate-x" : "vertex-coordinate-y");
+        goto done;
+    }
+
+    /* Count, then collect, nodes and edges in document order. */
+    for (xmlNode *c = graph_el->children; c; c = c->next) {
+        if (is_element(c, "node")) {
+            if (G.nn == WK_POLYGON_MAX_N) {
+                st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(c),
+                             "too many vertices (more than %u)", WK_POLYGON_MAX_N);
+                goto done;
+            }
+            G.nn++;
+        } else if (is_element(c, "edge")) {
+            if (G.ne == WK_POLYGON_MAX_N) {
+                st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(c),
+                             "too many edges (more than %u)", WK_POLYGON_MAX_N);
+                goto done;
+            }
+            G.ne++;
+        }
+    }
+    if (G.nn == 0) {
+        st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(graph_el), "the graph has no nodes");
+        goto done;
+    }
+    G.node = WK_NEW_ARRAY(R, xmlNode *, G.nn);
+    G.edge = WK_NEW_ARRAY(R, xmlNode *, G.ne);
+    G.id = WK_NEW_ARRAY(R, xstr, G.nn);
+    G.idx = WK_NEW_ARRAY(R, uint32_t, G.nn);
+    G.tmp = WK_NEW_ARRAY(R, uint32_t, G.nn);
+    G.src = WK_NEW_ARRAY(R, uint32_t, G.ne);
+    G.dst = WK_NEW_ARRAY(R, uint32_t, G.ne);
+    G.nx = WK_NEW_ARRAY(R, double, G.nn);
+    G.ny = WK_NEW_ARRAY(R, double, G.nn);
+    G.ew = WK_NEW_ARRAY(R, double, G.ne);
+    G.inc = WK_NEW_ARRAY(R, uint32_t, 2 * (size_t)G.nn);
+    G.deg = WK_NEW_ARRAY(R, uint32_t, G.nn);
+    if (!G.node || !G.edge || !G.id || !G.idx || !G.tmp || !G.src || !G.dst || !G.nx ||
+        !G.ny || !G.ew || !G.inc || !G.deg) {
+        st = WK_ENOMEM;
+        goto done;
+    }
+    uint32_t in = 0, ie = 0;
+    for (xmlNode *c = graph_el->children; c; c = c->next) {
+        if (is_element(c, "node")) G.node[in++] = c;
+        if (is_element(c, "edge")) G.edge[ie++] = c;
+    }
+
+    /* Nodes: ids (unique), coordinates. */
+    for (uint32_t i = 0; i < G.nn; i++) {
+        G.id[i] = attr_value(G.node[i], "id");
+        if (!G.id[i].s) {
+            st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[i]), "node %u has no id attribute",
+                         i);
+            goto done;
+        }
+        if ((st = node_coordinate(R, name, &G, i, &kx, "vertex-coordinate-x", &G.nx[i])) != WK_OK ||
+            (st = node_coordinate(R, name, &G, i, &ky, "vertex-coordinate-y", &G.ny[i])) != WK_OK)
+            goto done;
+        G.idx[i] = i;
+    }
+    const uint32_t *sorted = sort_ids(G.id, G.idx, G.tmp, G.nn);
+    for (uint32_t k = 1; k < G.nn; k++) {
+        uint32_t a = sorted[k - 1], b = sorted[k];
+        if (!xmlStrEqual(G.id[a].s, G.id[b].s)) continue;
+        if (a > b) {
+            uint32_t t = a;
+            a = b;
+            b = t;
+        }
+        st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[b]),
+                     "duplicate node id '%.60s' (first on line %ld)", (const char *)G.id[a].s,
+                     xmlGetLineNo(G.node[a]));
+        goto done;
+    }
+
+    /* Edges: endpoints, weights, degrees. */
+    for (uint32_t i = 0; i < G.ne; i++) {
+        xmlNode *e = G.edge[i], *where;
+        const char *end_name[2] = {"source", "target"};
+        uint32_t end[2];
+        for (int j = 0; j < 2; j++) {
+            xstr v = attr_value(e, end_name[j]);
+            end[j] = v.s ? find_id(G.id, sorted, G.nn, v.s) : WK_NONE;
+            if (end[j] == WK_NONE) {
+                describe_element(e, "edge", i, d1, sizeof d1);
+                if (v.s)
+                    st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(e),
+                                 "%s: %s '%.60s' is not a node id", d1, end_name[j],
+                                 (const char *)v.s);
+                else
+                    st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(e), "%s has no %s attribute",
+                                 d1, end_name[j]);
+                xstr_free(&v);
+                goto done;
+            }
+            xstr_free(&v);
+        }
+        if (end[0] == end[1]) {
+            st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(e), "%s is a loop at node '%.60s'",
+                         describe_element(e, "edge", i, d1, sizeof d1),
+                         (const char *)G.id[end[0]].s);
+            goto done;
+        }
+        G.src[i] = end[0];
+        G.dst[i] = end[1];
+        int got = key_number(e, &kw, &G.ew[i], &where, bad, sizeof bad);
+        if (got == 0) G.ew[i] = 1.0;
+        if (got < 0 || (got > 0 && !(G.ew[i] > 0))) {
+            describe_element(e, "edge", i, d1, sizeof d1);
+            if (got < 0)
+                st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
+                             "%s: edge-weight '%s' is not a finite number", d1, bad);
+            else
+                st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
+                             "weight of %s must be > 0 (got %g)", d1, G.ew[i]);
+            goto done;
+        }
+        double add = 0;
+        got = key_number(e, &ka, &add, &where, bad, sizeof bad);
+        if (got < 0 || add != 0) {
+            st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
+                         "%s: non-zero edge-weight-additive is not supported",
+                         describe_element(e, "edge", i, d1, sizeof d1));
+            goto done;
+        }
+        for (int j = 0; j < 2; j++) {
+            uint32_t v = end[j];
+            if (G.deg[v] < 2) G.inc[2 * (size_t)v + G.deg[v]] = i;
+            if (G.deg[v] < UINT32_MAX) G.deg[v]++;
+        }
+    }
+    for (uint32_t v = 0; v < G.nn; v++)
+        if (G.deg[v] != 2) {
+            st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[v]),
+                         "node '%.60s' has %u incident edge%s; the edges must form one cycle "
+                         "(every node on exactly 2)",
+                         (const char *)G.id[v].s, G.deg[v], G.deg[v] == 1 ? "" : "s");
+            goto done;
+        }
+
+    /* Walk the cycle from node 0 along its first edge. */
+    if ((st = vertex_arrays_alloc(R, &G.cyc, G.nn)) != WK_OK) goto done;
+    uint32_t *seen = G.deg; /* reused: 2 = not yet visited, 0 = visited */
+    uint32_t cur = 0, e = G.inc[0], k = 0;
+    for (;;) {
+        seen[cur] = 0;
+        G.cyc.x[k] = G.nx[cur];
+        G.cyc.y[k] = G.ny[cur];
+        G.cyc.w[k] = G.ew[e];
+        G.cyc.line[k] = xmlGetLineNo(G.node[cur]);
+        k++;
+        uint32_t nxt = G.src[e] == cur ? G.dst[e] : G.src[e];
+        if (nxt == 0) break;
+        if (seen[nxt] == 0) { /* defensive: a 2-regular walk returns to its start */
+            st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[nxt]),
+                         "the edges do not form a simple cycle at node '%.60s'",
+                         (const char *)G.id[nxt].s);
+            goto done;
+        }
+        e = G.inc[2 * (size_t)nxt] == e ? G.inc[2 * (size_t)nxt + 1] : G.inc[2 * (size_t)nxt];
+        cur = nxt;
+    }
+    if (k < G.nn) {
+        uint32_t v = 0;
+        while (seen[v] == 0) v++;
+        snprintf(d2, sizeof d2, "'%.60s'", (const char *)G.id[0].s);
+        st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[v]),
+                     "the edges form more than one cycle: %s is not on the cycle through node %s "
+                     "(%u of %u nodes)",
+                     describe_element(G.node[v], "node", v, d1, sizeof d1), d2, k, G.nn);
+        goto done;
+    }
+    st = wk_polygon_from_arrays(R, G.nn, G.cyc.x, G.cyc.y, G.cyc.w, name, G.cyc.line, out);
+done:
+    graph_free(R, &G);
+    gkey_clear(&kx);
+    gkey_clear(&ky);
+    gkey_clear(&kw);
+    gkey_clear(&ka);
+    return st;
+}
+
+wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const char *name,
+                                  wk_polygon **out) {
+    *out = NULL;
+    if (!name) name = "";
+    if (len > INT_MAX)
+        return WK_FAIL(R, WK_EINPUT, name, 0, "GraphML input too large (%zu bytes)", len);
+    xmlParserCtxtPtr ctx = xmlNewParserCtxt();
+    if (!ctx) return WK_FAIL(R, WK_ENOMEM, name, 0, "out of memory (libxml2 parser context)");
+    /* NONET: never fetch anything; no NOENT/DTDLOAD, so no external entities.
+    ** NOERROR/NOWARNING: the library never prints; the error is taken from
+    ** the context instead.  NOBLANKS drops the indentation text nodes, a
+    ** third of the tree (the tree costs about 3 KB per polygon vertex).
+    ** BIG_LINES: line numbers past 65535 in messages. */
+    const int options = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING |
+                        XML_PARSE_NOBLANKS | XML_PARSE_BIG_LINES;
+    xmlDoc *doc = xmlCtxtReadMemory(ctx, buf, (int)len, name, NULL, options);
+    wk_status st;
+    if (!doc || !ctx->wellFormed) {
+        const xmlError *err = xmlCtxtGetLastError(ctx);
+        char msg[256] = "not well-formed";
+        long line = 0;
+        if (err && err->message) {
+            snprintf(msg, sizeof msg, "%s", err->message);
+            size_t l = strlen(msg);
+            while (l > 0 && (msg[l - 1] == '\n' || msg[l - 1] == ' ')) msg[--l] = '\0';
+            line = err->line;
+        }
+        st = WK_FAIL(R, WK_EINPUT, name, line, "XML error: %s", msg);
+    } else {
+        st = graphml_polygon(R, doc, name, out);
+    }
+    xmlFreeDoc(doc);
+    xmlFreeParserCtxt(ctx);
+    return st;
+}
+
+/* ---- by content ---- */
+
+wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out) {
+    *out = NULL;
+    bool use_stdin = strcmp(path, "-") == 0;
+    const char *name = use_stdin ? "<stdin>" : path;
+    FILE *f = use_stdin ? stdin : fopen(path, "rb");
+    if (!f) return WK_FAIL(R, WK_EINPUT, path, 0, "cannot open: %s", strerror(errno));
+    text t;
+    wk_status st = slurp(R, f, name, &t);
+    if (!use_stdin) fclose(f);
+    if (st != WK_OK) return st;
+    /* GraphML if the first non-blank character is '<' (after a UTF-8 byte
+    ** order mark, if any). */
+    const char *c = t.buf;
+    if ((unsigned char)c[0] == 0xEF && (unsigned char)c[1] == 0xBB && (unsigned char)c[2] == 0xBF)
+        c += 3;
+    while (is_blank(*c) || *c == '\n') c++;
+    if (*c == '<')
+        st = wk_polygon_read_graphml(R, t.buf, t.len, name, out);
+    else
+        st = parse_wpoly(R, &t, name, out);
+    text_free(R, &t);
+    return st;
+}

@@ -1,0 +1,98 @@
+/*
+** write_json.c: the skeleton as JSON, the format other tools and the Python
+** tests read.  The contract (format "wskel-1"):
+**
+**   {"format":"wskel-1", "variant":NAME, "k":K, "n":N, "r":R,
+**    "nodes":[[x,y,t], ...],          input numbering: nodes[0..n) are the
+**                                      input vertices in input order, t = 0
+**    "arcs":[[a,b,left,right], ...],  node ids; left/right: the input edges
+**                                      whose faces lie left/right of a -> b
+**    "stats":{COUNTER:count, ... (every name of WK_COUNTER_LIST),
+**             "time_s":seconds, "peak_bytes":bytes}}
+**
+** K is null when the variant has no cache (info->k == WK_NONE), the number
+** when finite, and "max" for WK_K_MAX.  WK_NONE and WK_K_MAX are the same
+** value, so "max" is written only when the variant named in info is
+** registered with WK_VARIANT_USES_K.  With info == NULL: variant "unknown",
+** k null, stats null; with info->counters == NULL the stats hold only time_s
+** and peak_bytes.  Doubles are written with %.17g (they round-trip); a
+** non-finite double, which only an invalid skeleton has, is written as null
+** so that the file stays JSON.  One node or arc per line keeps diffs readable.
+*/
+#include "write.h"
+
+#include <math.h>
+
+static void put_double(FILE *f, double v) {
+    if (isfinite(v)) fprintf(f, "%.17g", v);
+    else fputs("null", f);
+}
+
+static void put_string(FILE *f, const char *s) {
+    fputc('"', f);
+    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
+        if (*c == '"' || *c == '\\') fprintf(f, "\\%c", *c);
+        else if (*c < 0x20) fprintf(f, "\\u%04x", *c);
+        else fputc(*c, f);
+    }
+    fputc('"', f);
+}
+
+static void put_k(FILE *f, const wk_run_info *info) {
+    if (info && info->k != WK_K_MAX) {
+        fprintf(f, "%u", info->k);
+        return;
+    }
+    /* WK_K_MAX == WK_NONE: "max" only for a variant that has a cache. */
+    const wk_variant *V = info && info->variant ? wk_variant_find(info->variant) : NULL;
+    fputs(V && (V->flags & WK_VARIANT_USES_K) ? "\"max\"" : "null", f);
+}
+
+wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
+                        const wk_run_info *info) {
+    uint32_t *vertex_of;
+    if (wk_write_begin(R, P, S, "write json: ") != WK_OK ||
+        wk_input_order(R, P, &vertex_of, NULL) != WK_OK)
+        return R->err.code;
+
+    fputs("{\"format\":\"wskel-1\",\"variant\":", f);
+    put_string(f, info && info->variant ? info->variant : "unknown");
+    fputs(",\"k\":", f);
+    put_k(f, info);
+    fprintf(f, ",\"n\":%u,\"r\":%u,\n\"nodes\":[\n", P->n, P->r);
+    for (uint32_t i = 0; i < S->n_nodes; i++) {
+        const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
+        fputc('[', f);
+        put_double(f, v->x);
+        fputc(',', f);
+        put_double(f, v->y);
+        fputc(',', f);
+        put_double(f, v->t);
+        fputs(i + 1 < S->n_nodes ? "],\n" : "]\n", f);
+    }
+    fputs("],\n\"arcs\":[\n", f);
+    for (uint32_t i = 0; i < S->n_arcs; i++) {
+        const wk_arc *c = &S->arcs[i];
+        fprintf(f, "[%u,%u,%u,%u]%s\n", wk_polygon_output_node(P, c->a),
+                wk_polygon_output_node(P, c->b), wk_polygon_input_edge(P, c->left),
+                wk_polygon_input_edge(P, c->right), i + 1 < S->n_arcs ? "," : "");
+    }
+    fputs("],\n\"stats\":", f);
+    if (!info) {
+        fputs("null", f);
+    } else {
+        fputc('{', f);
+        if (info->counters) {
+#define WK_JSON_COUNTER(name) \
+    fprintf(f, "\"" #name "\":%llu,", (unsigned long long)info->counters->name);
+            WK_COUNTER_LIST(WK_JSON_COUNTER)
+#undef WK_JSON_COUNTER
+        }
+        fputs("\"time_s\":", f);
+        put_double(f, info->time_s);
+        fprintf(f, ",\"peak_bytes\":%zu}", info->peak_bytes);
+    }
+    fputs("}\n", f);
+    WK_FREE_ARRAY(R, vertex_of, P->n);
+    return wk_write_end(R, f, "json");
+}

@@ -1,0 +1,156 @@
+/*
+** write_svg.c: a picture of the skeleton, for people (not a data format:
+** coordinates are written with 10 significant digits).
+**
+** Layers, bottom to top: the polygon (filled light), offset curves at the
+** requested times (thin grey), convex arcs (blue), reflex arcs (orange, see
+** wk_arc_is_reflex), nodes (small dots).  SVG's y axis points down, so every
+** y is negated and the picture is not mirrored; the viewBox is the polygon's
+** bounding box plus a 4% margin, and stroke widths and dot radii are
+** fractions of the polygon's scale (bounding box diagonal), so any input
+** size draws the same.
+**
+** Offset curve of face e at time t: the part of the line at signed distance
+** w(e) t from edge e's supporting line that lies inside the face's cycle,
+** i.e. the wavefront of e at time t.  The line is cut with every side of the
+** cycle (a side crosses it when its ends' signs of d - w t differ, zero
+** counting as negative, so a cycle always yields an even number of cuts); the
+** cuts sorted along the edge's direction pair up into inside segments.
+** Offsets need the faces, so they are built (first, before anything is
+** written) only when times are given: an invalid skeleton whose faces do not
+** close still draws without them.
+*/
+#include "write.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+typedef struct cut { double u, x, y; } cut; /* position along the edge, point */
+
+static int cut_cmp(const void *pa, const void *pb) {
+    const cut *a = pa, *b = pb;
+    return (a->u > b->u) - (a->u < b->u);
+}
+
+/* 0.0 - y, not -y: no "-0" in the output. */
+static void put_xy(FILE *f, double x, double y) { fprintf(f, "%.10g,%.10g", x, 0.0 - y); }
+
+static void put_xml_text(FILE *f, const char *s) {
+    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
+        if (*c == '&') fputs("&amp;", f);
+        else if (*c == '<') fputs("&lt;", f);
+        else if (*c == '>') fputs("&gt;", f);
+        else fputc(*c < 0x20 ? '?' : *c, f);
+    }
+}
+
+/* Segments of face e's wavefront at time t, as path commands. */
+static void put_offset(FILE *f, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
+                       const uint32_t *cyc, uint32_t len, double t, cut *cuts) {
+    wk_point p = P->p[e], q = P->p[e + 1 == P->n ? 0 : e + 1];
+    double dx = q.x - p.x, dy = q.y - p.y, l = hypot(dx, dy);
+    if (!(l > 0)) return;
+    dx /= l;
+    dy /= l;
+    double want = P->w[e] * t;
+    uint32_t m = 0;
+    for (uint32_t i = 0; i < len; i++) {
+        const wk_node *a = &S->nodes[cyc[i]], *b = &S->nodes[cyc[i + 1 == len ? 0 : i + 1]];
+        double sa = dx * (a->y - p.y) - dy * (a->x - p.x) - want;
+        double sb = dx * (b->y - p.y) - dy * (b->x - p.x) - want;
+        if ((sa > 0) == (sb > 0)) continue;
+        double k = sa / (sa - sb), x = a->x + k * (b->x - a->x), y = a->y + k * (b->y - a->y);
+        cuts[m++] = (cut){(x - p.x) * dx + (y - p.y) * dy, x, y};
+    }
+    qsort(cuts, m, sizeof *cuts, cut_cmp);
+    for (uint32_t i = 0; i + 1 < m; i += 2) {
+        fputs("M", f);
+        put_xy(f, cuts[i].x, cuts[i].y);
+        fputs("L", f);
+        put_xy(f, cuts[i + 1].x, cuts[i + 1].y);
+    }
+}
+
+static void put_offsets(FILE *f, const wk_polygon *P, const wk_skeleton *S, const wk_faces *F,
+                        const double *offsets, uint32_t n_offsets, double sw, cut *cuts) {
+    for (uint32_t k = 0; k < n_offsets; k++) {
+        if (!(offsets[k] > 0) || !isfinite(offsets[k])) continue; /* t = 0: the boundary */
+        fprintf(f, "<path class=\"offset\" data-t=\"%.10g\" fill=\"none\" stroke=\"#8a8a8a\" "
+                   "stroke-width=\"%.4g\" d=\"",
+                offsets[k], sw * 0.5);
+        for (uint32_t e = 0; e < F->n; e++)
+            put_offset(f, P, S, e, F->node + F->start[e], F->start[e + 1] - F->start[e],
+                       offsets[k], cuts);
+        fputs("\"/>\n", f);
+    }
+}
+
+static void put_arcs(FILE *f, const wk_polygon *P, const wk_skeleton *S, bool reflex,
+                     const char *colour, double sw) {
+    fprintf(f, "<path class=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"%.4g\" d=\"",
+            reflex ? "reflex" : "convex", colour, sw);
+    for (uint32_t i = 0; i < S->n_arcs; i++) {
+        if (wk_arc_is_reflex(P, S, i) != reflex) continue;
+        const wk_node *a = &S->nodes[S->arcs[i].a], *b = &S->nodes[S->arcs[i].b];
+        fputs("M", f);
+        put_xy(f, a->x, a->y);
+        fputs("L", f);
+        put_xy(f, b->x, b->y);
+    }
+    fputs("\"/>\n", f);
+}
+
+wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
+                       const double *offsets, uint32_t n_offsets) {
+    if (!offsets) n_offsets = 0;
+    wk_faces F = {0, NULL, NULL};
+    cut *cuts = NULL;
+    uint32_t maxlen = 0;
+    if (wk_write_begin(R, P, S, "write svg: ") != WK_OK ||
+        (n_offsets && wk_faces_build(R, P, S, &F, "write svg (offset curves): ") != WK_OK))
+        return R->err.code;
+    for (uint32_t e = 0; e < F.n; e++)
+        if (F.start[e + 1] - F.start[e] > maxlen) maxlen = F.start[e + 1] - F.start[e];
+    if (n_offsets && !(cuts = WK_NEW_ARRAY(R, cut, maxlen))) {
+        wk_faces_clear(R, &F);
+        return R->err.code;
+    }
+
+    double x0 = P->p[0].x, x1 = x0, y0 = P->p[0].y, y1 = y0;
+    for (uint32_t i = 1; i < P->n; i++) {
+        x0 = fmin(x0, P->p[i].x);
+        x1 = fmax(x1, P->p[i].x);
+        y0 = fmin(y0, P->p[i].y);
+        y1 = fmax(y1, P->p[i].y);
+    }
+    double scale = hypot(x1 - x0, y1 - y0), pad = 0.04 * scale, sw = 0.002 * scale;
+    double W = x1 - x0 + 2 * pad, H = y1 - y0 + 2 * pad;
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"%.10g %.10g %.10g %.10g\" "
+               "width=\"800\" height=\"%.0f\">\n<title>",
+            x0 - pad, -(y1 + pad), W, H, W > 0 ? 800.0 * H / W : 800.0);
+    put_xml_text(f, P->name[0] ? P->name : "polygon");
+    fprintf(f, ": weighted straight skeleton, %u nodes, %u arcs (blue convex, orange reflex)"
+               "</title>\n<g stroke-linecap=\"round\" stroke-linejoin=\"round\">\n",
+            S->n_nodes, S->n_arcs);
+    fprintf(f, "<polygon class=\"polygon\" fill=\"#f4f1e4\" stroke=\"#333333\" "
+               "stroke-width=\"%.4g\" points=\"",
+            sw);
+    for (uint32_t i = 0; i < P->n; i++) {
+        if (i) fputc(' ', f);
+        put_xy(f, P->p[i].x, P->p[i].y);
+    }
+    fputs("\"/>\n", f);
+    if (n_offsets) put_offsets(f, P, S, &F, offsets, n_offsets, sw, cuts);
+    put_arcs(f, P, S, false, "#1f5fbf", sw);
+    put_arcs(f, P, S, true, "#e07b00", sw);
+    fprintf(f, "<g class=\"nodes\" fill=\"#222222\">\n");
+    for (uint32_t j = 0; j < S->n_nodes; j++)
+        fprintf(f, "<circle cx=\"%.10g\" cy=\"%.10g\" r=\"%.4g\"/>\n", S->nodes[j].x,
+                0.0 - S->nodes[j].y, 2 * sw);
+    fputs("</g>\n</g>\n</svg>\n", f);
+
+    if (cuts) WK_FREE_ARRAY(R, cuts, maxlen);
+    wk_faces_clear(R, &F);
+    return wk_write_end(R, f, "svg");
+}

@@ -1,0 +1,595 @@
+#!/usr/bin/python3
+"""test_cgal_agreement.py: wskel's naive variant against CGAL's straight skeleton.
+
+Run: /usr/bin/python3 tests/test_cgal_agreement.py [-v]   (from anywhere)
+
+For unit weights the weighted skeleton is the ordinary straight skeleton, so
+`bin/wskel --variant naive` and `bin/wskel-cgal` (tests/cgal/) must produce
+the same skeleton up to representation: scripts/compare_skeletons.py merges
+coincident nodes and compares arc for arc, faces and times included.
+
+  * TestCompare: compare() itself, on hand-built skeletons (no binaries).
+  * TestCgalBaseline: bin/wskel-cgal alone: face bookkeeping, the clockwise
+    renumbering, the unit-weight refusal.
+  * TestHandMade: square, 2x1 rectangle, regular 3..12-gons, L, cross, comb,
+    clockwise copies, collinear vertices; wskel against CGAL.
+  * TestGenerated: bin/wskel-gen families x n in {8, 20, 50, 200, 500} x seeds,
+    wskel against CGAL; one summary line per family on stderr.
+
+A missing binary skips the tests that need it (say which); when the binaries
+exist, any disagreement fails.  Failing inputs are copied to a directory
+named in the failure message so they can be replayed.
+
+Environment:
+  WSKEL_BIN, WSKEL_GEN_BIN, WSKEL_CGAL_BIN  override bin/wskel, bin/wskel-gen,
+                                            bin/wskel-cgal
+  WSKEL_CGAL_SEEDS     seeds per (family, n) (default 10)
+  WSKEL_CGAL_BUDGET    seconds for all generated families together (default
+                       120; 0 = no limit).  Cases run seed-major, so a cut
+                       run still covers every (family, n) at the first seeds;
+                       the summary line says how many were not run.
+  WSKEL_CGAL_JOBS      parallel cases (default 2)
+"""
+
+import concurrent.futures
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import compare_skeletons as cs  # noqa: E402
+
+WSKEL = os.environ.get("WSKEL_BIN", os.path.join(ROOT, "bin", "wskel"))
+WSKEL_GEN = os.environ.get("WSKEL_GEN_BIN", os.path.join(ROOT, "bin", "wskel-gen"))
+WSKEL_CGAL = os.environ.get("WSKEL_CGAL_BIN", os.path.join(ROOT, "bin", "wskel-cgal"))
+
+FAMILIES = ["star", "comb", "spiral", "notched", "crossing", "random", "monotone",
+            "rectilinear", "convex"]
+SIZES = [8, 20, 50, 200, 500]
+SEEDS = int(os.environ.get("WSKEL_CGAL_SEEDS", "10"))
+BUDGET = float(os.environ.get("WSKEL_CGAL_BUDGET", "120"))
+JOBS = max(1, int(os.environ.get("WSKEL_CGAL_JOBS", "2")))
+TIMEOUT = 120  # seconds for one program run; a hang is a failure, not a wait
+
+
+def have(path):
+    return os.path.isfile(path) and os.access(path, os.X_OK)
+
+
+def need(*paths):
+    """Skip the calling test unless every binary exists."""
+    missing = [os.path.relpath(p, ROOT) for p in paths if not have(p)]
+    if missing:
+        raise unittest.SkipTest("not built yet: %s (run make)" % ", ".join(missing))
+
+
+# ------------------------------------------------------------- polygons
+
+def write_wpoly(path, pts, comment=None):
+    with open(path, "w") as f:
+        if comment:
+            f.write("# %s\n" % comment)
+        f.write("%d\n" % len(pts))
+        for x, y in pts:
+            f.write("%.17g %.17g\n" % (x, y))
+
+
+def read_wpoly(path):
+    """(points, weights) of a .wpoly file; weights default to 1."""
+    pts, ws, n = [], [], None
+    with open(path) as f:
+        for line in f:
+            s = line.strip()
+            if not s or s.startswith("#"):
+                continue
+            if n is None:
+                n = int(s)
+                continue
+            v = [float(c) for c in s.split()]
+            pts.append((v[0], v[1]))
+            ws.append(v[2] if len(v) > 2 else 1.0)
+    return pts, ws
+
+
+def regular(k, r=1.0):
+    return [(r * math.cos(2 * math.pi * i / k), r * math.sin(2 * math.pi * i / k))
+            for i in range(k)]
+
+
+def comb(teeth, width=1.0, gap=1.0, height=3.0, base=1.0):
+    """Counter-clockwise comb with equal teeth standing on a base."""
+    step = width + gap
+    right = teeth * step - gap
+    pts = [(0.0, 0.0), (right, 0.0)]
+    for i in range(teeth - 1, -1, -1):
+        x0 = i * step
+        pts += [(x0 + width, base + height), (x0, base + height)]
+        if i:
+            pts += [(x0, base), (x0 - gap, base)]
+    return pts
+
+
+def hand_made():
+    """name -> counter-clockwise or clockwise point list, all unit weights."""
+    polys = {
+        "square": [(0, 0), (1, 0), (1, 1), (0, 1)],
+        "rect2x1": [(0, 0), (2, 0), (2, 1), (0, 1)],
+        "L": [(0, 0), (2, 0), (2, 1), (1, 1), (1, 3), (0, 3)],
+        "cross": [(1, 0), (2, 0), (2, 1), (3, 1), (3, 2), (2, 2), (2, 3), (1, 3), (1, 2),
+                  (0, 2), (0, 1), (1, 1)],
+        "comb4": comb(4),
+        "collinear": [(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (3, 2), (1.5, 2), (0, 2),
+                      (0, 1)],
+    }
+    for k in range(3, 13):
+        polys["regular%d" % k] = regular(k)
+    polys["L_cw"] = list(reversed(polys["L"]))
+    polys["comb4_cw"] = list(reversed(polys["comb4"]))
+    polys["collinear_cw"] = list(reversed(polys["collinear"]))
+    polys["regular7_cw"] = list(reversed(polys["regular7"]))
+    return {k: [(float(x), float(y)) for x, y in v] for k, v in polys.items()}
+
+
+# ------------------------------------------------------------ running
+
+def run(cmd):
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           timeout=TIMEOUT, universal_newlines=True)
+        return p.returncode, p.stdout, p.stderr
+    except subprocess.TimeoutExpired:
+        return None, "", "timed out after %d s" % TIMEOUT
+
+
+class Outcome:
+    """One polygon's verdict: 'same', 'differ' (a test failure) or 'skip'
+    (the comparison could not be made for a reason that is not wskel's
+    fault: CGAL failed, the generator could not make the polygon)."""
+
+    def __init__(self, name, verdict, why="", path=None):
+        self.name, self.verdict, self.why, self.path = name, verdict, why, path
+
+
+def agree(name, wpoly, work):
+    """Run wskel (naive) and CGAL on wpoly and compare; returns an Outcome."""
+    a = os.path.join(work, name + ".wskel.json")
+    b = os.path.join(work, name + ".cgal.json")
+    rc_b, _, err_b = run([WSKEL_CGAL, "-o", b, wpoly])
+    rc_a, _, err_a = run([WSKEL, "--variant", "naive", "--format", "json", "-o", a, wpoly])
+    if rc_b == 2:
+        return Outcome(name, "skip", "CGAL failed: " + err_b.strip(), wpoly)
+    if rc_b == 1 and rc_a == 1:
+        return Outcome(name, "skip", "both reject the input: " + err_a.strip(), wpoly)
+    if rc_a != 0:
+        return Outcome(name, "differ", "wskel exit %s: %s" % (rc_a, err_a.strip()), wpoly)
+    if rc_b != 0:
+        return Outcome(name, "differ", "wskel accepted it, wskel-cgal exit %s: %s"
+                       % (rc_b, err_b.strip()), wpoly)
+    try:
+        res = cs.compare(cs.load(a), cs.load(b))
+    except cs.SkeletonError as e:
+        return Outcome(name, "differ", "cannot compare: %s" % e, wpoly)
+    if res.identical:
+        return Outcome(name, "same")
+    why = "wskel (A) vs CGAL (B): " + res.summary() + "\n    " + "\n    ".join(res.details(5))
+    return Outcome(name, "differ", why, wpoly)
+
+
+def report_failures(test, outcomes):
+    """Fail test with every disagreement, keeping the inputs for replay."""
+    bad = [o for o in outcomes if o.verdict == "differ"]
+    if not bad:
+        return
+    keep = tempfile.mkdtemp(prefix="wskel-cgal-fail-")
+    for o in bad:
+        if o.path and os.path.exists(o.path):
+            shutil.copy(o.path, keep)
+    lines = ["%d polygon(s) disagree with CGAL; inputs kept in %s" % (len(bad), keep)]
+    for o in bad[:10]:
+        lines.append("  %s: %s" % (o.name, o.why))
+    if len(bad) > 10:
+        lines.append("  ... %d more" % (len(bad) - 10))
+    lines.append("replay: bin/wskel --variant naive -o A.json IN; bin/wskel-cgal -o B.json IN; "
+                 "scripts/compare_skeletons.py --verbose A.json B.json")
+    test.fail("\n".join(lines))
+
+
+# -------------------------------------------------- face bookkeeping
+
+def face_areas(d):
+    """Signed area of every face from the arcs' left/right labels.  Edge e's
+    face is bounded by the edge (input direction e -> e+1) and by its arcs,
+    taken a -> b where e is on the left, b -> a where it is on the right;
+    for a clockwise input the face lies right of its edge, so the arcs'
+    contribution flips.  Correct labels give every face the polygon's sign
+    and a total equal to the polygon's area; a swapped label breaks both."""
+    n, nodes = d["n"], d["nodes"]
+
+    def cr(p, q):
+        return p[0] * q[1] - p[1] * q[0]
+
+    area = sum(cr(nodes[i], nodes[(i + 1) % n]) for i in range(n)) / 2
+    sgn = 1 if area > 0 else -1
+    face = [cr(nodes[e], nodes[(e + 1) % n]) for e in range(n)]
+    for a, b, l, r in d["arcs"]:
+        c = sgn * cr(nodes[a], nodes[b])
+        face[l] += c
+        face[r] -= c
+    return area, [f / 2 for f in face]
+
+
+def line_distance(d, e, x, y):
+    """Signed distance of (x, y) from the supporting line of input edge e,
+    positive on the polygon's inner side."""
+    n, nodes = d["n"], d["nodes"]
+    (x1, y1), (x2, y2) = nodes[e][:2], nodes[(e + 1) % n][:2]
+    area = sum(nodes[i][0] * nodes[(i + 1) % n][1] - nodes[(i + 1) % n][0] * nodes[i][1]
+               for i in range(n))
+    s = 1 if area > 0 else -1
+    return s * ((x2 - x1) * (y - y1) - (y2 - y1) * (x - x1)) / math.hypot(x2 - x1, y2 - y1)
+
+
+# ================================================================ tests
+
+def _rect_skeleton():
+    """2x1 rectangle: two nodes at (0.5,0.5) and (1.5,0.5), t = 0.5."""
+    return {"format": "wskel-1", "variant": "hand", "k": None, "n": 4, "r": 0,
+            "nodes": [[0, 0, 0], [2, 0, 0], [2, 1, 0], [0, 1, 0],
+                      [0.5, 0.5, 0.5], [1.5, 0.5, 0.5]],
+            "arcs": [[0, 4, 3, 0], [1, 5, 0, 1], [2, 5, 1, 2], [3, 4, 2, 3], [4, 5, 2, 0]]}
+
+
+def _square_skeleton(split=False):
+    """Unit square; split=True represents the degree-4 centre as two nodes
+    joined by a zero-length arc, the way CGAL does."""
+    d = {"format": "wskel-1", "variant": "hand", "k": None, "n": 4, "r": 0,
+         "nodes": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0.5]],
+         "arcs": [[0, 4, 3, 0], [1, 4, 0, 1], [2, 4, 1, 2], [3, 4, 2, 3]]}
+    if split:
+        d["nodes"].append([0.5 + 1e-15, 0.5 - 1e-15, 0.5 + 1e-15])
+        d["arcs"] = [[0, 4, 3, 0], [1, 4, 0, 1], [2, 5, 1, 2], [3, 5, 2, 3], [4, 5, 1, 3]]
+    return d
+
+
+def _copy(d):
+    return {k: ([list(v) for v in d[k]] if k in ("nodes", "arcs") else d[k]) for k in d}
+
+
+class TestCompare(unittest.TestCase):
+    """compare() must accept representations of one skeleton and catch changes."""
+
+    def test_equal_to_itself(self):
+        for d in (_rect_skeleton(), _square_skeleton(), _square_skeleton(split=True)):
+            r = cs.compare(d, _copy(d))
+            self.assertTrue(r.identical, r.summary())
+
+    def test_renumbered_and_reversed_arcs_are_equal(self):
+        a = _rect_skeleton()
+        b = _copy(a)
+        b["nodes"][4], b["nodes"][5] = b["nodes"][5], b["nodes"][4]
+        swap = {4: 5, 5: 4}
+        b["arcs"] = [[swap.get(y, y), swap.get(x, x), r, l] for x, y, l, r in reversed(a["arcs"])]
+        r = cs.compare(a, b)
+        self.assertTrue(r.identical, r.summary())
+
+    def test_rounding_within_tolerance_is_equal(self):
+        a = _rect_skeleton()
+        b = _copy(a)
+        b["nodes"][4] = [0.5 + 1e-12, 0.5 - 1e-12, 0.5 + 1e-12]
+        self.assertTrue(cs.compare(a, b).identical)
+
+    def test_split_vertex_equals_merged(self):
+        r = cs.compare(_square_skeleton(), _square_skeleton(split=True))
+        self.assertTrue(r.identical, r.summary() + "\n" + "\n".join(r.details()))
+        self.assertEqual(r.counts["zero_arcs_b"], 1)
+        r = cs.compare(_square_skeleton(split=True), _square_skeleton())
+        self.assertTrue(r.identical, r.summary())
+
+    def test_moved_node_differs(self):
+        a = _rect_skeleton()
+        b = _copy(a)
+        b["nodes"][5] = [1.5, 0.5 + 1e-3, 0.5]
+        r = cs.compare(a, b)
+        self.assertFalse(r.identical)
+        self.assertTrue(r.only_a and r.only_b, r.summary())
+        self.assertEqual(cs.main([self._dump(a), self._dump(b)]), 1)
+
+    def test_changed_face_differs(self):
+        a = _rect_skeleton()
+        b = _copy(a)
+        b["arcs"][4] = [4, 5, 1, 0]  # the spine between the long edges claims edge 1
+        r = cs.compare(a, b)
+        self.assertFalse(r.identical)
+        self.assertEqual(len(r.face_mismatches), 1, r.summary())
+
+    def test_swapped_sides_differ(self):
+        a = _rect_skeleton()
+        b = _copy(a)
+        b["arcs"][4] = [4, 5, 0, 2]  # same faces, wrong sides
+        r = cs.compare(a, b)
+        self.assertFalse(r.identical)
+        self.assertEqual(len(r.face_mismatches), 1, r.summary())
+
+    def test_time_differs(self):
+        a = _rect_skeleton()
+        b = _copy(a)
+        b["nodes"][4][2] = 0.6
+        r = cs.compare(a, b)
+        self.assertFalse(r.identical)
+        self.assertEqual(len(r.time_mismatches), 1, r.summary())
+
+    def test_missing_arc_differs(self):
+        a = _rect_skeleton()
+        b = _copy(a)
+        del b["arcs"][4]
+        r = cs.compare(a, b)
+        self.assertEqual((len(r.only_a), len(r.only_b)), (1, 0), r.summary())
+
+    def test_split_with_inconsistent_times_differs(self):
+        b = _square_skeleton(split=True)
+        b["nodes"][5][2] = 0.7
+        r = cs.compare(_square_skeleton(), b)
+        self.assertFalse(r.identical)
+
+    def test_other_polygon_is_an_error(self):
+        a = _rect_skeleton()
+        b = _copy(a)
+        b["nodes"][1] = [2.5, 0, 0]
+        with self.assertRaises(cs.SkeletonError):
+            cs.compare(a, b)
+        self.assertEqual(cs.main([self._dump(a), self._dump(b)]), 2)
+        with self.assertRaises(cs.SkeletonError):
+            cs.compare(a, {"format": "other"})
+
+    def test_cli_exit_codes(self):
+        a = _rect_skeleton()
+        pa = self._dump(a)
+        self.assertEqual(cs.main([pa, self._dump(_copy(a))]), 0)
+        self.assertEqual(cs.main([pa, os.path.join(self.tmp, "missing.json")]), 2)
+        bad = os.path.join(self.tmp, "bad.json")
+        with open(bad, "w") as f:
+            f.write("{not json")
+        self.assertEqual(cs.main([pa, bad]), 2)
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="wskel-cmp-")
+        self._n = 0
+        # main() prints its verdicts and complaints; keep the test log clean.
+        self._std = sys.stdout, sys.stderr
+        sys.stdout = sys.stderr = open(os.devnull, "w")
+
+    def tearDown(self):
+        sys.stdout.close()
+        sys.stdout, sys.stderr = self._std
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    def _dump(self, d):
+        import json
+        self._n += 1
+        p = os.path.join(self.tmp, "s%d.json" % self._n)
+        with open(p, "w") as f:
+            json.dump(d, f)
+        return p
+
+
+class TestCgalBaseline(unittest.TestCase):
+    """bin/wskel-cgal on its own: its JSON must follow the contract."""
+
+    @classmethod
+    def setUpClass(cls):
+        need(WSKEL_CGAL)
+        cls.tmp = tempfile.mkdtemp(prefix="wskel-cgal-")
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def cgal(self, name, pts):
+        src = os.path.join(self.tmp, name + ".wpoly")
+        out = os.path.join(self.tmp, name + ".json")
+        write_wpoly(src, pts)
+        rc, _, err = run([WSKEL_CGAL, "-o", out, src])
+        self.assertEqual(rc, 0, "%s: %s" % (name, err))
+        self.assertFalse(os.path.exists(out + ".tmp"))
+        return cs.load(out)
+
+    def test_contract_and_faces(self):
+        for name, pts in sorted(hand_made().items()):
+            with self.subTest(polygon=name):
+                d = self.cgal(name, pts)
+                n = len(pts)
+                self.assertEqual((d["format"], d["variant"], d["k"], d["n"]),
+                                 ("wskel-1", "cgal", None, n))
+                self.assertIsNone(d["stats"]["peak_bytes"])
+                self.assertGreater(d["stats"]["peak_rss_bytes"], 0)
+                self.assertGreaterEqual(d["stats"]["time_s"], 0)
+                for i in range(n):
+                    self.assertEqual(d["nodes"][i], [pts[i][0], pts[i][1], 0])
+                for v in d["nodes"][n:]:
+                    self.assertGreater(v[2], 0)
+                area, faces = face_areas(d)
+                for e, fa in enumerate(faces):
+                    self.assertGreater(fa * area, 0, "face %d has area %g" % (e, fa))
+                self.assertAlmostEqual(sum(faces), area, delta=1e-9 * abs(area))
+                # Each arc end is at distance t from both of its faces' lines.
+                for a, b, l, r in d["arcs"]:
+                    for v in (d["nodes"][a], d["nodes"][b]):
+                        for e in (l, r):
+                            self.assertAlmostEqual(line_distance(d, e, v[0], v[1]), v[2],
+                                                   delta=1e-9)
+
+    def test_reflex_count(self):
+        self.assertEqual(self.cgal("L", hand_made()["L"])["r"], 1)
+        self.assertEqual(self.cgal("cross", hand_made()["cross"])["r"], 4)
+        self.assertEqual(self.cgal("collinear", hand_made()["collinear"])["r"], 0)
+
+    def test_clockwise_maps_to_input_numbering(self):
+        """The clockwise copy's skeleton, renumbered by hand into the
+        counter-clockwise numbering, must equal the counter-clockwise one:
+        cw vertex i is ccw vertex n-1-i, and cw edge i (cw i -> cw i+1) is
+        the ccw edge from ccw vertex n-2-i to n-1-i, i.e. ccw edge n-2-i."""
+        for name in ("L", "comb4", "collinear", "regular7"):
+            with self.subTest(polygon=name):
+                ccw = self.cgal(name, hand_made()[name])
+                cw = self.cgal(name + "_cw", hand_made()[name + "_cw"])
+                n = ccw["n"]
+                vmap = lambda j: n - 1 - j if j < n else j  # noqa: E731
+                emap = lambda e: (n - 2 - e) % n  # noqa: E731
+                re = _copy(cw)
+                re["nodes"] = [cw["nodes"][n - 1 - i] for i in range(n)] + cw["nodes"][n:]
+                re["arcs"] = [[vmap(a), vmap(b), emap(l), emap(r)] for a, b, l, r in cw["arcs"]]
+                res = cs.compare(ccw, re)
+                self.assertTrue(res.identical, res.summary() + "\n" + "\n".join(res.details()))
+
+    def test_weights_refused(self):
+        src = os.path.join(self.tmp, "weighted.wpoly")
+        with open(src, "w") as f:
+            f.write("# weighted\n4\n0 0 1\n1 0 2\n1 1\n0 1 1\n")
+        rc, out, err = run([WSKEL_CGAL, src])
+        self.assertEqual(rc, 1)
+        self.assertEqual(out, "")
+        self.assertIn("wskel-cgal: %s: CGAL baseline supports unit weights only" % src, err)
+
+    def test_bad_input_and_usage(self):
+        src = os.path.join(self.tmp, "bowtie.wpoly")
+        write_wpoly(src, [(0, 0), (1, 1), (1, 0), (0, 1)])
+        self.assertEqual(run([WSKEL_CGAL, src])[0], 1)
+        src = os.path.join(self.tmp, "short.wpoly")
+        with open(src, "w") as f:
+            f.write("4\n0 0\n1 0\n1 1\n")
+        rc, _, err = run([WSKEL_CGAL, src])
+        self.assertEqual(rc, 1)
+        self.assertIn("expected 4 vertices", err)
+        self.assertEqual(run([WSKEL_CGAL])[0], 64)
+        self.assertEqual(run([WSKEL_CGAL, "--bogus", src])[0], 64)
+        out = os.path.join(self.tmp, "never.json")
+        run([WSKEL_CGAL, "-o", out, src])
+        self.assertFalse(os.path.exists(out) or os.path.exists(out + ".tmp"))
+
+
+class TestHandMade(unittest.TestCase):
+    """Small polygons with exact degeneracies: vertex events of high degree
+    (regular polygons, square), parallel edges, collinear vertices."""
+
+    def test_hand_made_agree(self):
+        need(WSKEL, WSKEL_CGAL)
+        work = tempfile.mkdtemp(prefix="wskel-hand-")
+        try:
+            outcomes = []
+            for name, pts in sorted(hand_made().items()):
+                path = os.path.join(work, name + ".wpoly")
+                write_wpoly(path, pts, "hand-made %s, unit weights" % name)
+                outcomes.append(agree(name, path, work))
+            same = sum(o.verdict == "same" for o in outcomes)
+            compared = sum(o.verdict != "skip" for o in outcomes)
+            skipped = [o for o in outcomes if o.verdict == "skip"]
+            print("CGAL agreement: %d/%d polygons identical (hand-made%s)"
+                  % (same, compared, "; %d skipped: %s" % (
+                      len(skipped), "; ".join("%s: %s" % (o.name, o.why) for o in skipped))
+                      if skipped else ""), file=sys.stderr)
+            report_failures(self, outcomes)
+        finally:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+def generate(family, n, seed, path):
+    """Write wskel-gen's polygon to path.  Returns None or why it failed."""
+    base = [WSKEL_GEN, family, "--n", str(n), "--seed", str(seed)]
+    for extra in ([], ["--weights", "unit"]):
+        rc, out, err = run(base + extra)
+        if rc != 0:
+            return "wskel-gen exit %s: %s" % (rc, err.strip())
+        if not out.strip():  # writes files only: ask for one
+            rc, out, err = run(base + extra + ["-o", path])
+            if rc != 0:
+                return "wskel-gen exit %s: %s" % (rc, err.strip())
+        else:
+            with open(path, "w") as f:
+                f.write(out)
+        try:
+            pts, ws = read_wpoly(path)
+        except (OSError, ValueError) as e:
+            return "cannot read wskel-gen output: %s" % e
+        if all(w == 1.0 for w in ws):
+            return None
+    return "wskel-gen gave non-unit weights"
+
+
+class TestGenerated(unittest.TestCase):
+    """wskel-gen families; one test per family so a failure names it."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.deadline = (time.monotonic() + BUDGET) if BUDGET > 0 else None
+        cls.families_left = len(FAMILIES)
+
+    def family(self, fam):
+        need(WSKEL, WSKEL_CGAL, WSKEL_GEN)
+        cls = type(self)
+        # An even share of what is left of the budget, so one slow family
+        # cannot starve the rest.
+        if cls.deadline is not None:
+            share = max(0.0, cls.deadline - time.monotonic()) / cls.families_left
+            deadline = time.monotonic() + share
+        else:
+            deadline = None
+        cls.families_left -= 1
+        work = tempfile.mkdtemp(prefix="wskel-gen-%s-" % fam)
+        try:
+            cases = [(fam, n, s) for s in range(1, SEEDS + 1) for n in SIZES]
+
+            def one(case):
+                f, n, s = case
+                name = "%s_n%d_s%d" % (f, n, s)
+                if deadline is not None and time.monotonic() > deadline:
+                    return Outcome(name, "not run")
+                path = os.path.join(work, name + ".wpoly")
+                why = generate(f, n, s, path)
+                if why:
+                    return Outcome(name, "nogen", why)
+                return agree(name, path, work)
+
+            with concurrent.futures.ThreadPoolExecutor(JOBS) as ex:
+                outcomes = list(ex.map(one, cases))
+            nogen = [o for o in outcomes if o.verdict == "nogen"]
+            if len(nogen) == len(outcomes):
+                raise unittest.SkipTest("wskel-gen cannot make family %s: %s"
+                                        % (fam, nogen[0].why))
+            same = sum(o.verdict == "same" for o in outcomes)
+            compared = sum(o.verdict in ("same", "differ") for o in outcomes)
+            notes = []
+            for verdict, what in (("not run", "not run (time budget; WSKEL_CGAL_BUDGET=0 "
+                                              "runs all)"),
+                                  ("nogen", "not generated"), ("skip", "skipped")):
+                k = [o for o in outcomes if o.verdict == verdict]
+                if k:
+                    notes.append("%d %s%s" % (len(k), what, (": " + k[0].name + ": " + k[0].why)
+                                              if k[0].why else ""))
+            print("CGAL agreement: %d/%d polygons identical (family %s, n in %s, %d seeds%s)"
+                  % (same, compared, fam, SIZES, SEEDS,
+                     "; " + "; ".join(notes) if notes else ""), file=sys.stderr)
+            report_failures(self, outcomes)
+        finally:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+def _family_test(fam):
+    def test(self):
+        self.family(fam)
+    test.__name__ = "test_%s" % fam
+    test.__doc__ = "wskel naive vs CGAL on wskel-gen %s polygons" % fam
+    return test
+
+
+for _fam in FAMILIES:
+    setattr(TestGenerated, "test_%s" % _fam, _family_test(_fam))
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,461 @@
+/*
+** test_generators.c: the polygon families of bench/generators.h.
+**
+** For every family over n in 8..2000 and ten seeds: generation succeeds,
+** exactly n vertices, counter-clockwise, exactly the promised reflex count,
+** simple (wk_polygon_from_arrays's sweep, and for small n an independent
+** O(n^2) check with wk_segments_meet), deterministic per seed, different
+** across seeds; the weight modes stay in range and never move a vertex; the
+** crossing family's bisector rays cross ceil(r/2)*floor(r/2) times (counted
+** by brute force); impossible parameters fail with WK_EINPUT and a message
+** naming the limit; allocation failures are clean.  Each test has its own
+** run and ends with zero live bytes.
+*/
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "generators.h"
+
+static const uint32_t sizes[] = {8, 9, 10, 11, 13, 16, 31, 64, 100, 257, 500, 1000, 2000};
+#define N_SIZES (sizeof sizes / sizeof sizes[0])
+#define N_SEEDS 10
+
+/* The reflex count a family promises for (n, r as asked), -1 if none. */
+static int64_t expected_r(const char *f, uint32_t n, int64_t r) {
+    if (!strcmp(f, "comb")) return 2 * ((int64_t)(n / 4) - 1);
+    if (!strcmp(f, "spiral") || !strcmp(f, "rectilinear")) return (int64_t)(n / 2) - 2;
+    if (!strcmp(f, "convex")) return 0;
+    if (!strcmp(f, "notched")) return r >= 0 ? r : n / 4;
+    if (!strcmp(f, "crossing")) return r >= 0 ? r : 2 * (((int64_t)n - 4) / 6);
+    if (!strcmp(f, "monotone")) return r >= 0 ? r : ((int64_t)n - 2) / 2;
+    if (!strcmp(f, "star")) return r;
+    return -1; /* random */
+}
+
+static bool family_takes(const char *f, uint32_t n) {
+    return strcmp(f, "rectilinear") != 0 || n % 2 == 0;
+}
+
+static wk_status gen(wk_run *R, const char *family, uint32_t n, int64_t r, uint64_t seed,
+                     const char *weights, wk_polygon **P) {
+    wk_gen_params g;
+    wk_gen_params_init(&g);
+    g.family = family;
+    g.n = n;
+    g.r = r;
+    g.seed = seed;
+    if (weights && wk_gen_parse_weights(R, weights, &g) != WK_OK) return R->err.code;
+    return wk_generate(R, &g, P);
+}
+
+/* Independent simplicity oracle, O(n^2): adjacent edges share only their
+** vertex, other edges nothing. */
+static bool brute_simple(const wk_polygon *P) {
+    uint32_t n = P->n;
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t j = i + 1; j < n; j++) {
+            wk_seg_meet m = wk_segments_meet(P->p[i], P->p[(i + 1) % n], P->p[j],
+                                             P->p[(j + 1) % n]);
+            bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
+            if (adjacent ? m != WK_SEG_TOUCH : m != WK_SEG_DISJOINT) return false;
+        }
+    return true;
+}
+
+static uint32_t count_reflex(const wk_polygon *P) {
+    uint32_t r = 0;
+    for (uint32_t i = 0; i < P->n; i++) r += wk_polygon_is_reflex(P, i);
+    return r;
+}
+
+/* Check one generated polygon against the family's promises. */
+static void check_polygon(const char *f, uint32_t n, int64_t r_asked, uint64_t seed,
+                          const wk_polygon *P) {
+    cr_assert_eq(P->n, n, "%s n=%u seed=%llu: %u vertices", f, n, (unsigned long long)seed, P->n);
+    cr_assert(!P->reversed, "%s n=%u: generated clockwise", f, n);
+    cr_assert(wk_polygon_area(P) > 0, "%s n=%u: area", f, n);
+    cr_assert_eq(count_reflex(P), P->r, "%s n=%u: P->r", f, n);
+    int64_t want = expected_r(f, n, r_asked);
+    if (want >= 0)
+        cr_assert_eq((int64_t)P->r, want, "%s n=%u r=%lld seed=%llu: %u reflex, want %lld", f,
+                     n, (long long)r_asked, (unsigned long long)seed, P->r, (long long)want);
+    for (uint32_t i = 0; i < n; i++) cr_assert(isfinite(P->p[i].x) && isfinite(P->p[i].y));
+    if (n <= 300) cr_assert(brute_simple(P), "%s n=%u seed=%llu: not simple", f, n,
+                            (unsigned long long)seed);
+}
+
+Test(generators, every_family_spread) {
+    wk_run R;
+    wk_run_init(&R);
+    for (size_t k = 0; wk_gen_families[k]; k++) {
+        const char *f = wk_gen_families[k];
+        for (size_t s = 0; s < N_SIZES; s++) {
+            uint32_t n = sizes[s];
+            if (!family_takes(f, n)) continue;
+            wk_polygon *prev = NULL;
+            for (uint64_t seed = 1; seed <= N_SEEDS; seed++) {
+                wk_polygon *P = NULL, *Q = NULL;
+                wk_status st = gen(&R, f, n, -1, seed, NULL, &P);
+                cr_assert_eq(st, WK_OK, "%s n=%u seed=%llu: %s", f, n, (unsigned long long)seed,
+                             R.err.msg);
+                check_polygon(f, n, -1, seed, P);
+                /* deterministic per seed, different across seeds */
+                cr_assert_eq(gen(&R, f, n, -1, seed, NULL, &Q), WK_OK);
+                cr_assert(!memcmp(P->p, Q->p, n * sizeof *P->p), "%s n=%u seed=%llu: rerun differs",
+                          f, n, (unsigned long long)seed);
+                if (prev)
+                    cr_assert(memcmp(P->p, prev->p, n * sizeof *P->p) != 0,
+                              "%s n=%u: seeds %llu and %llu agree", f, n,
+                              (unsigned long long)seed - 1, (unsigned long long)seed);
+                wk_polygon_free(&R, Q);
+                wk_polygon_free(&R, prev);
+                prev = P;
+            }
+            wk_polygon_free(&R, prev);
+        }
+    }
+    cr_assert_eq(wk_run_close(&R), 0);
+}
+
+/* The families that take --r, at the edges of their ranges. */
+Test(generators, chosen_r) {
+    wk_run R;
+    wk_run_init(&R);
+    static const char *const fams[] = {"star", "notched", "crossing", "monotone"};
+    for (size_t k = 0; k < 4; k++) {
+        const char *f = fams[k];
+        for (size_t s = 0; s < N_SIZES; s++) {
+            uint32_t n = sizes[s];
+            int64_t top = !strcmp(f, "monotone")   ? (int64_t)n - 3
+                          : !strcmp(f, "crossing") ? ((int64_t)n - 4) / 3
+                                                   : n / 2;
+            int64_t rs[] = {0, 1, 2, top / 3, top / 2 + 1, top - 1, top};
+            for (size_t j = 0; j < sizeof rs / sizeof rs[0]; j++) {
+                int64_t r = rs[j];
+                if (r < 0 || r > top) continue;
+                for (uint64_t seed = 1; seed <= N_SEEDS; seed++) {
+                    wk_polygon *P = NULL;
+                    wk_status st = gen(&R, f, n, r, seed, NULL, &P);
+                    cr_assert_eq(st, WK_OK, "%s n=%u r=%lld seed=%llu: %s", f, n, (long long)r,
+                                 (unsigned long long)seed, R.err.msg);
+                    check_polygon(f, n, r, seed, P);
+                    wk_polygon_free(&R, P);
+                }
+            }
+        }
+    }
+    cr_assert_eq(wk_run_close(&R), 0);
+}
+
+Test(generators, deterministic_per_seed) {
+    wk_run R;
+    wk_run_init(&R);
+    for (size_t k = 0; wk_gen_families[k]; k++) {
+        const char *f = wk_gen_families[k];
+        for (uint32_t n = 8; n <= 2000; n *= 5) {
+            wk_polygon *A = NULL, *B = NULL, *C = NULL;
+            cr_assert_eq(gen(&R, f, n, -1, 42, "uniform", &A), WK_OK, "%s", R.err.msg);
+            cr_assert_eq(gen(&R, f, n, -1, 42, "uniform", &B), WK_OK, "%s", R.err.msg);
+            cr_assert_eq(gen(&R, f, n, -1, 43, "uniform", &C), WK_OK, "%s", R.err.msg);
+            cr_assert(!memcmp(A->p, B->p, n * sizeof *A->p), "%s n=%u: same seed differs", f, n);
+            cr_assert(!memcmp(A->w, B->w, n * sizeof *A->w), "%s n=%u: weights differ", f, n);
+            cr_assert(memcmp(A->p, C->p, n * sizeof *A->p) != 0, "%s n=%u: seeds 42, 43 agree",
+                      f, n);
+            wk_polygon_free(&R, A);
+            wk_polygon_free(&R, B);
+            wk_polygon_free(&R, C);
+        }
+    }
+    cr_assert_eq(wk_run_close(&R), 0);
+}
+
+Test(generators, weights_in_range_and_geometry_unmoved) {
+    wk_run R;
+    wk_run_init(&R);
+    static const struct {
+        const char *mode;
+        wk_weight_mode m;
+        double a, b;
+    } cases[] = {
+        {"unit", WK_W_UNIT, 1, 1},          {"uniform", WK_W_UNIFORM, 0.5, 2},
+        {"uniform:1:5", WK_W_UNIFORM, 1, 5}, {"two", WK_W_TWO, 1, 3},
+        {"two:2.5:0.25", WK_W_TWO, 2.5, 0.25}, {"int", WK_W_INT, 1, 4},
+        {"int:3:9", WK_W_INT, 3, 9},
+    };
+    for (size_t k = 0; wk_gen_families[k]; k++) {
+        const char *f = wk_gen_families[k];
+        wk_polygon *U = NULL;
+        cr_assert_eq(gen(&R, f, 500, -1, 7, NULL, &U), WK_OK);
+        for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+            wk_polygon *P = NULL;
+            cr_assert_eq(gen(&R, f, 500, -1, 7, cases[c].mode, &P), WK_OK, "%s %s: %s", f,
+                         cases[c].mode, R.err.msg);
+            cr_assert(!memcmp(U->p, P->p, P->n * sizeof *P->p), "%s: weights %s moved vertices",
+                      f, cases[c].mode);
+            double a = cases[c].a, b = cases[c].b;
+            bool seen_a = false, seen_b = false;
+            for (uint32_t i = 0; i < P->n; i++) {
+                double w = P->w[i];
+                switch (cases[c].m) {
+                case WK_W_UNIT: cr_assert_eq(w, 1.0); break;
+                case WK_W_UNIFORM: cr_assert(w >= a && w <= b, "%s: %g", cases[c].mode, w); break;
+                case WK_W_TWO: cr_assert(w == a || w == b, "%s: %g", cases[c].mode, w); break;
+                case WK_W_INT:
+                    cr_assert(w >= a && w <= b && w == floor(w), "%s: %g", cases[c].mode, w);
+                    break;
+                }
+                seen_a |= w == a;
+                seen_b |= w == b;
+            }
+            if (cases[c].m == WK_W_TWO || cases[c].m == WK_W_INT)
+                cr_assert(seen_a && seen_b, "%s: both ends should occur in 500 draws",
+                          cases[c].mode);
+            wk_polygon_free(&R, P);
+        }
+        wk_polygon_free(&R, U);
+    }
+    cr_assert_eq(wk_run_close(&R), 0);
+}
+
+Test(generators, weight_mode_parsing) {
+    wk_run R;
+    wk_run_init(&R);
+    static const char *const bad[] = {"", "foo", "unit:1:2", "uniform:3:1", "uniform:1",
+                                      "uniform:1:x", "two:0:1", "two:-1:2", "int:1.5:3",
+                                      "int:1:inf", "uniform:nan:2", "int:0:3"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        wk_run Q;
+        wk_run_init(&Q);
+        wk_gen_params g;
+        wk_gen_params_init(&g);
+        cr_assert_eq(wk_gen_parse_weights(&Q, bad[i], &g), WK_EUSAGE, "'%s' accepted", bad[i]);
+        cr_assert_eq(g.weights, WK_W_UNIT, "'%s' changed g", bad[i]);
+        cr_assert_eq(wk_run_close(&Q), 0);
+    }
+    static const char *const good[] = {"unit", "uniform", "uniform:0.1:0.1", "two:1:3",
+                                       "int:1:4", "uniform:0.3:1e3"};
+    for (size_t i = 0; i < sizeof good / sizeof good[0]; i++) {
+        wk_gen_params g, h;
+        wk_gen_params_init(&g);
+        wk_gen_params_init(&h);
+        cr_assert_eq(wk_gen_parse_weights(&R, good[i], &g), WK_OK, "'%s': %s", good[i],
+                     R.err.msg);
+        char buf[128];
+        wk_gen_weights_format(&g, buf, sizeof buf);
+        cr_assert_eq(wk_gen_parse_weights(&R, buf, &h), WK_OK, "'%s'", buf);
+        cr_assert(g.weights == h.weights && g.wa == h.wa && g.wb == h.wb, "'%s' -> '%s'",
+                  good[i], buf);
+    }
+    cr_assert_eq(wk_run_close(&R), 0);
+}
+
+Test(generators, impossible_parameters) {
+    static const struct {
+        const char *family;
+        uint32_t n;
+        int64_t r;
+        wk_status st;
+        const char *msg;
+    } cases[] = {
+        {"notched", 100, 60, WK_EINPUT, "notched: r=60 > n/2=50"},
+        {"star", 100, 51, WK_EINPUT, "star: r=51 > n/2=50"},
+        {"star", 4, 1, WK_EINPUT, "star: r=1 > 0 needs n >= 5"},
+        {"notched", 4, 2, WK_EINPUT, "notched: r=2 > n-3=1"},
+        {"monotone", 10, 8, WK_EINPUT, "monotone: r=8 > n-3=7"},
+        {"crossing", 30, 9, WK_EINPUT, "crossing: n=30 < 3r+4=31 (r=9)"},
+        {"rectilinear", 11, -1, WK_EINPUT, "rectilinear: n=11 is odd"},
+        {"comb", 3, -1, WK_EINPUT, "n=3"},
+        {"comb", 16, 5, WK_EINPUT, "comb: r=5 cannot be chosen: r = 2*(floor(n/4)-1) = 6"},
+        {"spiral", 20, 3, WK_EINPUT, "spiral: r=3 cannot be chosen: r = floor(n/2)-2 = 8"},
+        {"convex", 20, 1, WK_EINPUT, "convex: r=1 cannot be chosen"},
+        {"spiral", 5, -1, WK_EINPUT, "spiral: n=5 < 6"},
+        {"random", 20, 3, WK_EINPUT, "random: r cannot be chosen"},
+        {"star", 2, -1, WK_EINPUT, "star: n=2 is outside [3, "},
+        {"convex", WK_GEN_N_MAX + 1, -1, WK_EINPUT, "is outside"},
+        {"hexagon", 20, -1, WK_EUSAGE, "unknown family 'hexagon'"},
+        {NULL, 20, -1, WK_EUSAGE, "unknown family"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        wk_run R;
+        wk_run_init(&R);
+        wk_polygon *P = (wk_polygon *)&R; /* must come back NULL */
+        wk_status st = gen(&R, cases[i].family, cases[i].n, cases[i].r, 1, NULL, &P);
+        cr_assert_eq(st, cases[i].st, "case %zu: status %d", i, st);
+        cr_assert_null(P);
+        cr_assert(strstr(R.err.msg, cases[i].msg), "case %zu: message '%s' lacks '%s'", i,
+                  R.err.msg, cases[i].msg);
+        cr_assert_eq(wk_run_close(&R), 0);
+    }
+}
+
+/* ---- the crossing family's promise, by brute force ---- */
+
+typedef struct ray {
+    wk_point a, b; /* from the reflex vertex to the first boundary point hit */
+} ray;
+
+/* The unit-weight bisector of reflex vertex i, cut at the first boundary
+** point it reaches. */
+static ray bisector_ray(const wk_polygon *P, uint32_t i) {
+    uint32_t n = P->n;
+    wk_point p = P->p[i], u = P->p[(i + n - 1) % n], v = P->p[(i + 1) % n];
+    double ex = p.x - u.x, ey = p.y - u.y, fx = v.x - p.x, fy = v.y - p.y;
+    double le = hypot(ex, ey), lf = hypot(fx, fy);
+    /* inward (left) normals of the two edges; their sum is the bisector */
+    double dx = -ey / le - fy / lf, dy = ex / le + fx / lf;
+    double best = INFINITY;
+    for (uint32_t e = 0; e < n; e++) {
+        uint32_t f = (e + 1) % n;
+        if (e == i || f == i) continue;
+        wk_point a = P->p[e], b = P->p[f];
+        double sx = b.x - a.x, sy = b.y - a.y;
+        double den = dx * sy - dy * sx;
+        if (den == 0) continue;
+        double qx = a.x - p.x, qy = a.y - p.y;
+        double t = (qx * sy - qy * sx) / den;  /* along the ray */
+        double s = (qx * dy - qy * dx) / den;  /* along the edge */
+        if (t > 0 && s >= 0 && s <= 1 && t < best) best = t;
+    }
+    return (ray){p, {p.x + best * dx, p.y + best * dy}};
+}
+
+static uint64_t count_ray_crossings(const wk_polygon *P) {
+    ray rays[64];
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < P->n; i++)
+        if (wk_polygon_is_reflex(P, i)) {
+            cr_assert(k < 64);
+            rays[k++] = bisector_ray(P, i);
+        }
+    uint64_t crossings = 0;
+    for (uint32_t i = 0; i < k; i++)
+        for (uint32_t j = i + 1; j < k; j++)
+            crossings += wk_segments_meet(rays[i].a, rays[i].b, rays[j].a, rays[j].b) ==
+                         WK_SEG_CROSS;
+    return crossings;
+}
+
+Test(generators, crossing_family_ray_crossings) {
+    wk_run R;
+    wk_run_init(&R);
+    static const int64_t rs[] = {0, 1, 2, 3, 4, 6, 9, 10, 16, 21, 32, 40};
+    for (size_t j = 0; j < sizeof rs / sizeof rs[0]; j++) {
+        int64_t r = rs[j];
+        uint64_t want = (uint64_t)((r + 1) / 2) * (uint64_t)(r / 2);
+        for (uint32_t pad = 1; pad <= 50; pad += 49)
+            for (uint64_t seed = 1; seed <= 3; seed++) {
+                uint32_t n = (uint32_t)(3 * r + 3) + pad;
+                wk_polygon *P = NULL;
+                cr_assert_eq(gen(&R, "crossing", n, r, seed, NULL, &P), WK_OK, "%s", R.err.msg);
+                uint64_t got = count_ray_crossings(P);
+                cr_assert_eq(got, want, "crossing r=%lld n=%u seed=%llu: %llu crossings, want %llu",
+                             (long long)r, n, (unsigned long long)seed, (unsigned long long)got,
+                             (unsigned long long)want);
+                wk_polygon_free(&R, P);
+            }
+    }
+    cr_assert_eq(wk_run_close(&R), 0);
+}
+
+/* ---- shape promises of the structured families ---- */
+
+Test(generators, orthogonal_families_on_integers) {
+    wk_run R;
+    wk_run_init(&R);
+    for (uint32_t n = 4; n <= 403; n++) {
+        wk_polygon *P = NULL;
+        cr_assert_eq(gen(&R, "comb", n, -1, n, NULL, &P), WK_OK, "comb n=%u: %s", n, R.err.msg);
+        check_polygon("comb", n, -1, n, P);
+        for (uint32_t i = 0; i < n; i++)
+            cr_assert(P->p[i].x == floor(P->p[i].x) && P->p[i].y == floor(P->p[i].y));
+        wk_polygon_free(&R, P);
+        if (n % 2) continue;
+        cr_assert_eq(gen(&R, "rectilinear", n, -1, n, NULL, &P), WK_OK, "%s", R.err.msg);
+        check_polygon("rectilinear", n, -1, n, P);
+        for (uint32_t i = 0; i < n; i++) {
+            wk_point a = P->p[i], b = P->p[(i + 1) % n];
+            cr_assert(a.x == floor(a.x) && a.y == floor(a.y));
+            cr_assert((a.x == b.x) != (a.y == b.y), "rectilinear n=%u: edge %u not axis-parallel",
+                      n, i);
+        }
+        wk_polygon_free(&R, P);
+    }
+    cr_assert_eq(wk_run_close(&R), 0);
+}
+
+Test(generators, monotone_is_x_monotone) {
+    wk_run R;
+    wk_run_init(&R);
+    for (uint32_t n = 3; n <= 300; n += 7)
+        for (int64_t r = 0; r <= (int64_t)n - 3; r += 1 + (int64_t)n / 5) {
+            wk_polygon *P = NULL;
+            cr_assert_eq(gen(&R, "monotone", n, r, n + 1000 * (uint64_t)r, NULL, &P), WK_OK,
+                         "%s", R.err.msg);
+            check_polygon("monotone", n, r, 0, P);
+            /* x strictly increases from the leftmost vertex to the rightmost,
+            ** then strictly decreases: exactly two direction changes. */
+            uint32_t changes = 0;
+            for (uint32_t i = 0; i < n; i++) {
+                double d0 = P->p[(i + 1) % n].x - P->p[i].x;
+                double d1 = P->p[(i + 2) % n].x - P->p[(i + 1) % n].x;
+                cr_assert(d0 != 0, "monotone n=%u: vertical edge", n);
+                changes += (d0 > 0) != (d1 > 0);
+            }
+            cr_assert_eq(changes, 2, "monotone n=%u r=%lld: not x-monotone", n, (long long)r);
+            wk_polygon_free(&R, P);
+        }
+    cr_assert_eq(wk_run_close(&R), 0);
+}
+
+/* ---- failure paths and size ---- */
+
+/* Fail the k-th allocation for k = 0, 1, ...: every failure is WK_ENOMEM
+** with nothing left allocated, until generation succeeds. */
+Test(generators, allocation_failures_are_clean) {
+    static const struct {
+        const char *family;
+        uint32_t n;
+        int64_t r;
+    } cases[] = {{"star", 50, 10}, {"notched", 50, -1}, {"monotone", 50, 20}, {"random", 50, -1},
+                 {"rectilinear", 50, -1}, {"spiral", 50, -1}, {"crossing", 50, 6}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        for (int64_t k = 0;; k++) {
+            cr_assert(k < 1000, "%s: never succeeds", cases[c].family);
+            wk_run R;
+            wk_run_init(&R);
+            R.alloc.fail_after = k;
+            wk_polygon *P = NULL;
+            wk_status st = gen(&R, cases[c].family, cases[c].n, cases[c].r, 3, "uniform", &P);
+            if (st == WK_OK) {
+                check_polygon(cases[c].family, cases[c].n, cases[c].r, 3, P);
+                wk_polygon_free(&R, P);
+                cr_assert_eq(wk_run_close(&R), 0);
+                break;
+            }
+            cr_assert_eq(st, WK_ENOMEM, "%s k=%lld: %s", cases[c].family, (long long)k,
+                         R.err.msg);
+            cr_assert_null(P);
+            cr_assert_eq(wk_run_close(&R), 0, "%s k=%lld: leak", cases[c].family, (long long)k);
+        }
+    }
+}
+
+Test(generators, large_n_smoke) {
+    wk_run R;
+    wk_run_init(&R);
+    static const char *const fams[] = {"star", "spiral"};
+    for (size_t k = 0; k < 2; k++) {
+        wk_polygon *P = NULL;
+        cr_assert_eq(gen(&R, fams[k], 100000, -1, 1, NULL, &P), WK_OK, "%s", R.err.msg);
+        cr_assert_eq(P->n, 100000);
+        if (!strcmp(fams[k], "spiral")) cr_assert_eq(P->r, 100000 / 2 - 2);
+        wk_polygon_free(&R, P);
+    }
+    wk_polygon *P = NULL;
+    cr_assert_eq(gen(&R, "star", 100000, 50000, 1, NULL, &P), WK_OK, "%s", R.err.msg);
+    cr_assert_eq(P->r, 50000);
+    wk_polygon_free(&R, P);
+    cr_assert_eq(wk_run_close(&R), 0);
+}
