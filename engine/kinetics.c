@@ -63,3 +63,28 @@ bool wk_is_reflex_turn(const wk_offset_line *a, const wk_offset_line *b) {
     double cross = a->ux * b->uy - a->uy * b->ux;
     return cross < -WK_PARALLEL_SIN;
 }
+
+bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
+                         const wk_offset_line *c, wk_point *p, double *t) {
+    /* rows (nx, ny, -w) . (x, y, t) = c; Cramer's rule */
+    double m[3][3] = {{a->nx, a->ny, -a->w}, {b->nx, b->ny, -b->w}, {c->nx, c->ny, -c->w}};
+    double r[3] = {a->c, b->c, c->c};
+    double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                 m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                 m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    double scale = (a->w + b->w + c->w);
+    if (!(fabs(det) > 1e-9 * scale)) return false;
+    double dx = r[0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                m[0][1] * (r[1] * m[2][2] - m[1][2] * r[2]) +
+                m[0][2] * (r[1] * m[2][1] - m[1][1] * r[2]);
+    double dy = m[0][0] * (r[1] * m[2][2] - m[1][2] * r[2]) -
+                r[0] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                m[0][2] * (m[1][0] * r[2] - r[1] * m[2][0]);
+    double dt = m[0][0] * (m[1][1] * r[2] - r[1] * m[2][1]) -
+                m[0][1] * (m[1][0] * r[2] - r[1] * m[2][0]) +
+                r[0] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    p->x = dx / det;
+    p->y = dy / det;
+    *t = dt / det;
+    return isfinite(p->x) && isfinite(p->y) && isfinite(*t);
+}

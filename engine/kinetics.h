@@ -42,6 +42,11 @@ static inline double wk_offset_distance(const wk_offset_line *L, wk_point p, dou
 ** (nearly) parallel. */
 bool wk_offset_lines_meet(const wk_offset_line *a, const wk_offset_line *b, double t,
                           wk_point *p);
+/* The point and time where three offset lines meet (an event defined by its
+** input edges, as in CGAL's trisegments, so no rounding piles up from
+** earlier events).  False if the system is (nearly) singular. */
+bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
+                         const wk_offset_line *c, wk_point *p, double *t);
 /* True if turning from edge direction a to edge direction b is a right turn
 ** (the vertex between them is reflex).  Exact on the input directions. */
 bool wk_is_reflex_turn(const wk_offset_line *a, const wk_offset_line *b);

@@ -333,6 +333,11 @@ wk_status wk_skeleton_add_node(wk_run *R, wk_skeleton *S, double x, double y, do
 wk_status wk_skeleton_add_arc(wk_run *R, wk_skeleton *S, uint32_t a, uint32_t b,
                               uint32_t left, uint32_t right);
 void wk_skeleton_free(wk_run *R, wk_skeleton *S);
+/* Remove interior nodes of degree 2 whose two arcs separate the same two
+** faces the same way (one wavefront vertex that was replaced by an identical
+** one during a group of simultaneous events): the two arcs become one.
+** Keeps node and arc order otherwise (deterministic). */
+wk_status wk_skeleton_merge_pass_through(wk_run *R, wk_skeleton *S);
 
 /* ------------------------------------------------------------ tolerance */
 

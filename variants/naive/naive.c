@@ -183,6 +183,24 @@ static wk_status terminate(naive *N, uint32_t v, uint32_t sk) {
 
 /* -------------------------------------------------------------- events */
 
+/* Replace a kinematic estimate (t, p) of the event where offset lines e1,
+** e2, e3 meet by their exact meeting point when that system is well
+** conditioned and agrees with the estimate: the event then depends on input
+** edges only, as in CGAL's trisegments. */
+static void refine(const naive *N, const nv_vertex *V, uint32_t e1, uint32_t e2, uint32_t e3,
+                   double *t, wk_point *p) {
+    if (e1 == e2 || e2 == e3 || e1 == e3 || V->vkind != WK_VEL_REGULAR) return;
+    wk_point q;
+    double tq;
+    if (!wk_three_lines_meet(&N->L[e1], &N->L[e2], &N->L[e3], &q, &tq)) return;
+    double speed = fabs(V->vel.x) + fabs(V->vel.y);
+    if (fabs(tq - *t) > 16 * N->eps_t || dist2(q, *p) > 256 * N->eps_d * N->eps_d * (1 + speed * speed))
+        return;
+    if (tq < N->t_now) tq = N->t_now;
+    *t = tq;
+    *p = q;
+}
+
 /* Collapse time of the piece a -> a.next, relative motion along the edge. */
 static void edge_event(naive *N, uint32_t a, double *t, wk_point *p) {
     const nv_vertex *A = &N->v[a], *B = &N->v[A->next];
@@ -201,6 +219,7 @@ static void edge_event(naive *N, uint32_t a, double *t, wk_point *p) {
     }
     wk_point qa = pos_at(A, *t), qb = pos_at(B, *t);
     *p = (wk_point){0.5 * (qa.x + qb.x), 0.5 * (qa.y + qb.y)};
+    if (B->vkind == WK_VEL_REGULAR) refine(N, A, A->ein, A->eout, B->eout, t, p);
 }
 
 /* Does reflex vertex v hit piece a -> a.next before *best?  Updates the
@@ -224,6 +243,7 @@ static void split_test(naive *N, uint32_t vi, uint32_t a, double *best, wk_point
     double sb = (pb.x - p.x) * L->ux + (pb.y - p.y) * L->uy;
     if (sa < -N->eps_d || sb < -N->eps_d) return;
     if (t == *best && *ta != WK_NONE && a > *ta) return; /* deterministic tie */
+    refine(N, V, V->ein, V->eout, A->eout, &t, &p);
     *best = t;
     *bp = p;
     *ta = a;
@@ -981,6 +1001,7 @@ static wk_status naive_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
     for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge(P, i, &N.L[i]);
     if ((st = wk_skeleton_new(R, P, &N.S)) != WK_OK) goto done;
     st = simulate(&N);
+    if (st == WK_OK) st = wk_skeleton_merge_pass_through(R, N.S);
 done:
     wk_event_queue_clear(R, &N.Q);
     WK_FREE_ARRAY(R, N.L, P->n);
