@@ -77,14 +77,18 @@ test: all test-unit test-asan test-cli test-py
 test-unit: $(B)/tests/run_tests
 	$(B)/tests/run_tests --jobs 2
 test-asan: $(BA)/tests/run_tests
-	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BA)/tests/run_tests --jobs 2
+	WSKEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BA)/tests/run_tests --jobs 2
 test-cli: all
 	bash tests/cli_tests.sh
 test-py: all
 	$(PY) tests/test_outputs.py
+	$(PY) tests/test_cgal_agreement.py
 
 setup:
 	bash .ci/install-deps
 
 clean:
 	rm -rf $(B) $(BA) bin
+
+# Benchmark targets (bench, curves, regress) live with the harness.
+-include bench/bench.mk

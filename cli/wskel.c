@@ -2,7 +2,9 @@
 ** wskel.c: the command-line front end (bin/wskel).
 ** Reads one polygon, runs one variant, optionally validates, writes one
 ** output.  Output goes to FILE.tmp.PID and is renamed only on success, so a
-** failed run leaves no partial file.  Exit codes: 0 ok, 1 invalid input,
+** failed run leaves no partial file.  An existing FILE that is not a regular
+** file (/dev/null, a FIFO, a terminal) is written directly: renaming over it
+** would replace the device node with a plain file.  Exit codes: 0 ok, 1 invalid input,
 ** 2 the algorithm failed, 3 --check found the output invalid, 64 usage.
 */
 #define _POSIX_C_SOURCE 200809L
@@ -11,6 +13,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static const char usage_text[] =
@@ -209,15 +212,19 @@ int main(int argc, char **argv) {
     }
 
     if (outpath) {
-        size_t len = strlen(outpath) + 32;
-        tmp = malloc(len);
-        if (!tmp) {
-            WK_FAIL(&R, WK_ENOMEM, NULL, 0, "out of memory");
-            rc = report(&R);
-            goto done;
+        struct stat sb; /* a device or FIFO is written in place (see the top) */
+        bool atomic = !(stat(outpath, &sb) == 0 && !S_ISREG(sb.st_mode));
+        if (atomic) {
+            size_t len = strlen(outpath) + 32;
+            tmp = malloc(len);
+            if (!tmp) {
+                WK_FAIL(&R, WK_ENOMEM, NULL, 0, "out of memory");
+                rc = report(&R);
+                goto done;
+            }
+            snprintf(tmp, len, "%s.tmp.%ld", outpath, (long)getpid());
         }
-        snprintf(tmp, len, "%s.tmp.%ld", outpath, (long)getpid());
-        out = fopen(tmp, "w");
+        out = fopen(atomic ? tmp : outpath, "w");
         if (!out) {
             WK_FAIL(&R, WK_EINPUT, outpath, 0, "cannot write: %s", strerror(errno));
             rc = report(&R);
@@ -241,9 +248,12 @@ int main(int argc, char **argv) {
         if (fclose(out) != 0 && st == WK_OK)
             st = WK_FAIL(&R, WK_EALGO, outpath, 0, "write failed: %s", strerror(errno));
         out = NULL;
-        if (st == WK_OK && rename(tmp, outpath) != 0)
-            st = WK_FAIL(&R, WK_EALGO, outpath, 0, "cannot rename output: %s", strerror(errno));
-        if (st != WK_OK) remove(tmp);
+        if (tmp) { /* atomic: tmp is set only then */
+            if (st == WK_OK && rename(tmp, outpath) != 0)
+                st = WK_FAIL(&R, WK_EALGO, outpath, 0, "cannot rename output: %s",
+                             strerror(errno));
+            if (st != WK_OK) remove(tmp);
+        }
     }
     if (st != WK_OK) {
         rc = report(&R);
@@ -262,7 +272,7 @@ int main(int argc, char **argv) {
 done:
     if (out && out != stdout) {
         fclose(out);
-        remove(tmp);
+        if (tmp) remove(tmp);
     }
     free(tmp);
     free(offsets);

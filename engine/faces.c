@@ -71,8 +71,19 @@ static wk_status check_arc(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
     return WK_OK;
 }
 
+static wk_status check_sizes(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                             const char *what) {
+    if (S->n_input != P->n || S->n_nodes < P->n)
+        return WK_FAIL(R, WK_EINVALID, P->name, 0,
+                       "%sthe skeleton has %u input nodes and %u nodes for a polygon of %u "
+                       "vertices",
+                       what, S->n_input, S->n_nodes, P->n);
+    return WK_OK;
+}
+
 wk_status wk_faces_check_ids(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                              const char *what) {
+    if (check_sizes(R, P, S, what) != WK_OK) return R->err.code;
     for (uint32_t i = 0; i < S->n_arcs; i++)
         if (check_arc(R, P, S, i, what) != WK_OK) return R->err.code;
     return WK_OK;
@@ -123,23 +134,11 @@ static wk_status walk_face(wk_run *R, const wk_polygon *P, uint32_t e, half *h, 
     return WK_OK;
 }
 
-static wk_status check_sizes(wk_run *R, const wk_polygon *P, const wk_skeleton *S) {
-    if (S->n_input != P->n)
-        return WK_FAIL(R, WK_EINVALID, P->name, 0,
-                       "the skeleton has %u input nodes but the polygon %u vertices", S->n_input,
-                       P->n);
-    if (S->n_nodes < P->n)
-        return WK_FAIL(R, WK_EINVALID, P->name, 0,
-                       "the skeleton has %u nodes, fewer than the %u input vertices", S->n_nodes,
-                       P->n);
-    return WK_OK;
-}
-
 wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
                         uint32_t **cycle, uint32_t *len) {
     *cycle = NULL;
     *len = 0;
-    if (check_sizes(R, P, S) != WK_OK) return R->err.code;
+    if (check_sizes(R, P, S, "") != WK_OK) return R->err.code;
     if (e >= P->n)
         return WK_FAIL(R, WK_EINVALID, P->name, 0, "no face %u: the polygon has %u edges", e, P->n);
     uint32_t k = 0;
@@ -185,7 +184,7 @@ void wk_faces_clear(wk_run *R, wk_faces *F) {
 wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, wk_faces *F,
                          const char *what) {
     memset(F, 0, sizeof *F);
-    if (check_sizes(R, P, S) != WK_OK || wk_faces_check_ids(R, P, S, what) != WK_OK)
+    if (wk_faces_check_ids(R, P, S, what) != WK_OK)
         return R->err.code;
     uint32_t n = P->n, A = S->n_arcs;
     if (A > (UINT32_MAX - n) / 2)

@@ -25,9 +25,10 @@ typedef struct wk_faces {
     uint32_t *node;    /* every cycle, face e's beginning with nodes e, e+1 */
 } wk_faces;
 
-/* Check that every arc has node ids < S->n_nodes, a != b, face ids < P->n and
-** left != right.  what prefixes the message (e.g. "validate (c): ").
-** Fails with WK_EINVALID naming the first bad arc. */
+/* Check that S fits P (n_input == n <= n_nodes) and that every arc has node
+** ids < S->n_nodes, a != b, face ids < P->n and left != right: what any code
+** indexing arrays by these ids needs.  what prefixes the message (e.g.
+** "validate (c): ").  Fails with WK_EINVALID naming the first bad arc. */
 wk_status wk_faces_check_ids(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                              const char *what);
 

@@ -39,10 +39,10 @@
 ** no point outside P lies in any.  If two arcs crossed, the points just left
 ** of both would lie in both their left faces (or one face would not be
 ** simple); if an arc crossed the boundary, points outside P would lie in a
-** face.  This is exact up to the tolerances above, and costs
-** O(sum of L log L) over faces of L sides instead of a global search that a
-** uniform grid cannot keep near-linear when many long arcs run close
-** together (a star with 10^5 spikes).
+** face.  This is exact up to the tolerances above, and its cost is about
+** linear in the total number of face sides (2 arcs + n), where a global
+** search over all arcs with a uniform grid stops being near-linear as soon
+** as many long arcs run close together (a star with 10^5 thin spikes).
 **
 ** (b) uses a uniform grid over the polygon's edges (about two edges per
 ** cell).  Each cell gets a reference point that is not on the boundary and
@@ -62,8 +62,8 @@
 #include <math.h>
 #include <string.h>
 
-/* Below this many sides a face tests all pairs of sides: a grid costs more
-** than the 276 pair tests it would save. */
+/* Up to this many sides a face tests all pairs of sides (at most 252
+** non-adjacent ones), which is cheaper than building a grid. */
 #define FACE_PAIRS_MAX 24
 /* Reference point candidates per grid cell before giving up (each is
 ** rejected only if it lies exactly on an edge, which essentially never

@@ -11,9 +11,7 @@
 **             "time_s":seconds, "peak_bytes":bytes}}
 **
 ** K is null when the variant has no cache (info->k == WK_NONE), the number
-** when finite, and "max" for WK_K_MAX.  WK_NONE and WK_K_MAX are the same
-** value, so "max" is written only when the variant named in info is
-** registered with WK_VARIANT_USES_K.  With info == NULL: variant "unknown",
+** when finite, and "max" for WK_K_MAX.  With info == NULL: variant "unknown",
 ** k null, stats null; with info->counters == NULL the stats hold only time_s
 ** and peak_bytes.  Doubles are written with %.17g (they round-trip); a
 ** non-finite double, which only an invalid skeleton has, is written as null
@@ -39,13 +37,9 @@ static void put_string(FILE *f, const char *s) {
 }
 
 static void put_k(FILE *f, const wk_run_info *info) {
-    if (info && info->k != WK_K_MAX) {
-        fprintf(f, "%u", info->k);
-        return;
-    }
-    /* WK_K_MAX == WK_NONE: "max" only for a variant that has a cache. */
-    const wk_variant *V = info && info->variant ? wk_variant_find(info->variant) : NULL;
-    fputs(V && (V->flags & WK_VARIANT_USES_K) ? "\"max\"" : "null", f);
+    if (!info || info->k == WK_NONE) fputs("null", f);
+    else if (info->k == WK_K_MAX) fputs("\"max\"", f);
+    else fprintf(f, "%u", info->k);
 }
 
 wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,

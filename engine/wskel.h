@@ -28,7 +28,7 @@
 #include <stdio.h>
 
 #define WK_NONE UINT32_MAX
-#define WK_K_MAX UINT32_MAX /* --k max: cache the whole arrangement */
+#define WK_K_MAX (UINT32_MAX - 1) /* --k max: cache the whole arrangement */
 
 typedef enum wk_status {
     WK_OK = 0,

@@ -185,12 +185,11 @@ class Outputs(unittest.TestCase):
         return out
 
     def test_all_formats(self):
-        checked = 0
+        self.computed = 0  # inputs the variant did not decline
         for name, path, pts, ws in self.inputs():
             with self.subTest(input=name):
                 self.check_input(name, path, pts, ws)
-                checked += 1
-        self.assertGreater(checked, 0, "no input could be computed: nothing was checked")
+        self.assertGreater(self.computed, 0, "the variant declined every input: nothing checked")
 
     # ---------------------------------------------------------- per input
 
@@ -201,6 +200,8 @@ class Outputs(unittest.TestCase):
             self.skipTest("the variant declined %s (exit 2): %s" % (name, err.strip()))
         self.assertEqual(rc, 0, "wskel --format %s %s: exit %d: %s" % (fmt, name, rc, err))
         self.assertTrue(os.path.isfile(out), "no %s output for %s" % (fmt, name))
+        if fmt == "json":
+            self.computed += 1
         return out
 
     def check_input(self, name, path, pts, ws):

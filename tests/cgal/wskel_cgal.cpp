@@ -42,6 +42,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -378,8 +380,23 @@ int main(int argc, char **argv) {
 
     FILE *f = stdout;
     std::string tmp;
+    /* An existing target that is not a regular file (/dev/null, a FIFO) is
+    ** written directly: renaming over it would replace the device. */
+    struct stat sb;
+    bool direct = !out.empty() && stat(out.c_str(), &sb) == 0 && !S_ISREG(sb.st_mode);
+    if (direct) {
+        f = std::fopen(out.c_str(), "w");
+        if (!f) {
+            std::fprintf(stderr, "wskel-cgal: %s: cannot write: %s\n", out.c_str(), std::strerror(errno));
+            return EXIT_INPUT;
+        }
+        write_json(f, (uint32_t)in.x.size(), res.r, res.nodes, res.arcs, res.time_s, rss);
+        bool ok = !std::ferror(f);
+        ok = (std::fclose(f) == 0) && ok;
+        return ok ? 0 : EXIT_INPUT;
+    }
     if (!out.empty()) {
-        tmp = out + ".tmp";
+        tmp = out + ".tmp." + std::to_string((long)getpid());
         f = std::fopen(tmp.c_str(), "w");
         if (!f) {
             std::fprintf(stderr, "wskel-cgal: %s: cannot write: %s\n", tmp.c_str(), std::strerror(errno));

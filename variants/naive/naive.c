@@ -564,6 +564,32 @@ static wk_status plan(naive *N, double t, bool *again) {
             }
         }
     }
+    /* A sub-piece between two nodes is where parallel edges met; an
+    ** untouched vertex lying on it (an end of a collinear step of the other
+    ** side) meets it too: make it a node and plan again. */
+    bool forced_any = false;
+    for (uint32_t i = 0; i < N->n_sub; i++) {
+        const nv_sub *x = &N->sub[i];
+        if (x->dead || !IS_NODE(x->from) || !IS_NODE(x->to)) continue;
+        wk_point a = N->cl[NODE_OF(x->from)].p, b = N->cl[NODE_OF(x->to)].p;
+        const wk_offset_line *L = &N->L[x->edge];
+        double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
+        for (uint32_t j = 0; j < N->n_comp; j++) {
+            const nv_vertex *u = &N->v[N->comp[j]];
+            if (u->at != WK_NONE) continue;
+            wk_point q = pos_at(u, t);
+            double sq = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
+            double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
+            if (sq <= -N->eps_d || sq >= len + N->eps_d || fabs(off) > N->eps_d) continue;
+            if (push_u32(R, &N->forced, &N->n_forced, &N->cap_forced, N->comp[j]) != WK_OK)
+                return R->err.code;
+            forced_any = true;
+        }
+    }
+    if (forced_any) {
+        *again = true;
+        return WK_OK;
+    }
     /* pairing at each node */
     for (uint32_t k = 0; k < N->n_cl; k++) N->cl[k].count = 0;
     for (uint32_t i = 0; i < N->n_sub; i++) {
@@ -634,8 +660,9 @@ static wk_status plan(naive *N, double t, bool *again) {
                                    c->p.y, t);
                 if (push_u32(R, &N->forced, &N->n_forced, &N->cap_forced, far) != WK_OK)
                     return R->err.code;
-                *again = true;
-                return WK_OK;
+                *again = true; /* collect every spike of this round, then replan */
+                N->sub[in].pair_in = N->sub[best].pair_out = N->n_pair;
+                continue;
             }
             if (WK_GROW(R, N->pair, N->cap_pair, N->n_pair + 1) != WK_OK) return R->err.code;
             N->sub[in].pair_in = N->n_pair;

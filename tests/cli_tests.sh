@@ -1,0 +1,386 @@
+#!/usr/bin/env bash
+# cli_tests.sh: the command-line contract of bin/wskel and bin/wskel-gen
+# (issue 3, sections 5 and 6).  Run by `make test-cli`, from anywhere.
+#
+#   (a) bad-input corpus: every row of tests/data/bad/EXPECTED
+#       (file<TAB>exit<TAB>message substring) gives that exit code and message,
+#       prints nothing on stdout and leaves no file behind with -o
+#   (b) every tests/data/good/ file passes --check
+#   (c) usage errors exit 64 with a message; --help, --list-variants
+#   (d) '-' reads stdin; a missing input exits 1 with "cannot open"
+#   (e) every --format writes a non-empty file of its kind; --stats; --check
+#   (f) -o: unwritable path fails cleanly; atomic replace of a regular file;
+#       an existing file survives a failed run; a FIFO is written in place
+#   (g) determinism: two runs give identical nodes and arcs (and text output)
+#   (h) bin/wskel-gen: every family at n = 50 passes --check; exit codes 1, 64
+#
+# Exits non-zero if any check failed; prints "cli tests: N passed, M failed".
+# Environment: WSKEL_BIN and WSKEL_GEN override bin/wskel and bin/wskel-gen;
+# VERBOSE=1 prints every passing check too.
+set -uo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.." || exit 2
+WSKEL="${WSKEL_BIN:-bin/wskel}"
+GEN="${WSKEL_GEN:-bin/wskel-gen}"
+PY=/usr/bin/python3
+BAD=tests/data/bad
+GOOD=tests/data/good
+SQUARE="$GOOD/square.wpoly"
+LIMIT=120 # seconds per command: a hang is a failure, not a stuck CI job
+
+for prog in "$WSKEL" "$GEN"; do
+  if [ ! -x "$prog" ]; then
+    echo "cli tests: $prog is missing; run 'make' first" >&2
+    exit 2
+  fi
+done
+
+TMP=$(mktemp -d "${TMPDIR:-/tmp}/wskel-cli.XXXXXX") || exit 2
+BG_PID=""
+cleanup() {
+  [ -n "$BG_PID" ] && kill "$BG_PID" 2>/dev/null
+  rm -rf "$TMP"
+}
+trap cleanup EXIT
+
+PASSED=0
+FAILED=0
+pass() {
+  PASSED=$((PASSED + 1))
+  [ "${VERBOSE:-0}" = 1 ] && echo "ok   $1"
+  return 0
+}
+fail() { # fail NAME DETAIL...
+  FAILED=$((FAILED + 1))
+  local name="$1"; shift
+  echo "FAIL $name"
+  local line
+  for line in "$@"; do printf '       %s\n' "$line"; done
+  return 0
+}
+
+# run PROG ARGS...: sets RC, OUT (stdout file), ERR (stderr text).  stdin is
+# /dev/null unless the caller redirects run's stdin.
+OUT="$TMP/stdout"
+run() {
+  timeout "$LIMIT" "$@" >"$OUT" 2>"$TMP/stderr"
+  RC=$?
+  ERR=$(cat "$TMP/stderr")
+}
+
+# expect NAME CODE [SUBSTRING]: check the last run's exit code and, when
+# given, that stderr contains SUBSTRING (literally).
+expect() {
+  local name="$1" code="$2" sub="${3-}"
+  if [ "$RC" != "$code" ]; then
+    fail "$name" "exit $RC, expected $code" "stderr: ${ERR:0:400}"
+  elif [ -n "$sub" ] && [[ "$ERR" != *"$sub"* ]]; then
+    fail "$name" "stderr lacks: $sub" "stderr: ${ERR:0:400}"
+  else
+    pass "$name"
+  fi
+}
+
+# files_in DIR: the names in DIR (including dot files), one per line.
+files_in() { ls -A "$1"; }
+
+# ------------------------------------------------------- (a) bad inputs
+listed=" "
+rows=0
+while IFS=$'\t' read -r file code sub || [ -n "$file" ]; do
+  case "$file" in '' | '#'*) continue ;; esac
+  rows=$((rows + 1))
+  listed+="$file "
+  name="bad/$file"
+  if [ ! -f "$BAD/$file" ]; then
+    fail "$name" "listed in EXPECTED but missing"
+    continue
+  fi
+  d="$TMP/bad"
+  rm -rf "$d"; mkdir "$d"
+  run "$WSKEL" -o "$d/out.json" "$BAD/$file"
+  expect "$name: exit code and message" "$code" "$sub"
+  left=$(files_in "$d")
+  if [ -n "$left" ]; then
+    fail "$name: no file left behind" "left in the output directory: $left"
+  else
+    pass "$name: no file left behind"
+  fi
+  run "$WSKEL" "$BAD/$file"
+  if [ "$RC" = "$code" ] && [ ! -s "$OUT" ]; then
+    pass "$name: nothing on stdout"
+  else
+    fail "$name: nothing on stdout" "exit $RC, $(wc -c <"$OUT") bytes on stdout"
+  fi
+done <"$BAD/EXPECTED"
+[ "$rows" -gt 0 ] && pass "bad: EXPECTED has rows" || fail "bad: EXPECTED has rows" "no rows"
+for f in "$BAD"/*; do
+  base=${f##*/}
+  [ "$base" = EXPECTED ] && continue
+  if [[ "$listed" == *" $base "* ]]; then
+    pass "bad/$base: listed in EXPECTED"
+  else
+    fail "bad/$base: listed in EXPECTED" "the file has no expected exit code and message"
+  fi
+done
+
+# ------------------------------------------------------ (b) good inputs
+ngood=0
+for f in "$GOOD"/*; do
+  [ -f "$f" ] || continue
+  ngood=$((ngood + 1))
+  run "$WSKEL" --check -o "$TMP/good.json" "$f"
+  expect "good/${f##*/}: --check" 0
+  if [ -s "$TMP/good.json" ]; then pass "good/${f##*/}: output written"
+  else fail "good/${f##*/}: output written" "empty or missing"; fi
+  rm -f "$TMP/good.json"
+done
+[ "$ngood" -gt 0 ] && pass "good: corpus not empty" || fail "good: corpus not empty" "no files"
+
+# ------------------------------------------------------- (c) usage errors
+usage_case() { # usage_case NAME SUBSTRING ARGS...
+  local name="$1" sub="$2"; shift 2
+  run "$WSKEL" "$@"
+  expect "usage: $name" 64 "$sub"
+  if [ -s "$OUT" ]; then fail "usage: $name: nothing on stdout" "$(head -c 200 "$OUT")"
+  else pass "usage: $name: nothing on stdout"; fi
+}
+usage_case "no input" "no input"
+usage_case "two inputs" "more than one input" "$SQUARE" "$SQUARE"
+usage_case "unknown option" "unknown option '--frobnicate'" --frobnicate "$SQUARE"
+usage_case "unknown variant" "unknown variant 'nosuch'" --variant nosuch "$SQUARE"
+usage_case "--k 0" "--k must be" --k 0 "$SQUARE"
+usage_case "--k -1" "--k must be" --k -1 "$SQUARE"
+usage_case "--k abc" "--k must be" --k abc "$SQUARE"
+usage_case "--k 3x" "--k must be" --k 3x "$SQUARE"
+usage_case "--k overflow" "--k must be" --k 99999999999999999999999 "$SQUARE"
+usage_case "--format bad" "unknown format 'png'" --format png "$SQUARE"
+usage_case "--collinear bad" "--collinear must be" --collinear middle "$SQUARE"
+usage_case "--threads 0" "--threads must be" --threads 0 "$SQUARE"
+usage_case "--threads abc" "--threads must be" --threads abc "$SQUARE"
+usage_case "--threads 2x" "--threads must be" --threads 2x "$SQUARE"
+usage_case "--offsets bad" "--offsets must be" --offsets 1,,2 "$SQUARE"
+usage_case "--offsets negative" "--offsets must be" --offsets -1 "$SQUARE"
+for opt in --variant --k --format -o --offsets --collinear --threads; do
+  usage_case "$opt without value" "option $opt needs a value" "$SQUARE" "$opt"
+done
+
+run "$WSKEL" --help
+expect "--help exits 0" 0
+for word in --variant --k --format -o --offsets --check --stats --collinear --threads \
+            --help --list-variants json text svg obj vtp lower higher; do
+  # whole word: "-o" must not be satisfied by "--offsets"
+  if grep -qE -e "(^|[^-[:alnum:]])${word}([^-[:alnum:]]|$)" "$OUT"; then
+    pass "--help mentions $word"
+  else
+    fail "--help mentions $word" "not found in --help"
+  fi
+done
+for code in 0 1 2 3 64; do
+  if grep -qE "(^|[^0-9])$code([^0-9]|$)" "$OUT" && grep -qi "exit codes" "$OUT"; then
+    pass "--help documents exit code $code"
+  else
+    fail "--help documents exit code $code" "no 'exit codes' section naming $code"
+  fi
+done
+run "$WSKEL" --list-variants
+expect "--list-variants exits 0" 0
+if grep -q '^naive[[:space:]]' "$OUT"; then pass "--list-variants lists naive"
+else fail "--list-variants lists naive" "$(head -c 300 "$OUT")"; fi
+# every listed variant is accepted by --variant (the registry and the lookup agree)
+while read -r v _; do
+  [ -n "$v" ] || continue
+  run "$WSKEL" --variant "$v" --check "$SQUARE"
+  expect "--variant $v runs on the square" 0
+done < <("$WSKEL" --list-variants)
+
+# ------------------------------------------------------ (d) stdin, missing input
+run "$WSKEL" --check - <"$SQUARE"
+expect "'-' reads a .wpoly from stdin" 0
+if grep -q '"format":"wskel-1"' "$OUT"; then pass "stdin: json on stdout"
+else fail "stdin: json on stdout" "$(head -c 200 "$OUT")"; fi
+run "$WSKEL" --check - <"$GOOD/weighted.graphml"
+expect "'-' reads GraphML from stdin" 0
+run "$WSKEL" - <"$BAD/dup_vertex.wpoly"
+expect "stdin: bad input exits 1 naming <stdin>" 1 "<stdin>:4:"
+run "$WSKEL" "$TMP/no-such-file.wpoly"
+expect "missing input exits 1" 1 "cannot open"
+if [[ "$ERR" == *"no-such-file.wpoly"* ]]; then pass "missing input: message names the file"
+else fail "missing input: message names the file" "stderr: $ERR"; fi
+
+# ------------------------------------------------------ (e) formats, --stats, --check
+WEIGHTED="$GOOD/cw_weights.wpoly"
+declare -A SIGN=([json]='"format":"wskel-1"' [text]='^nodes [0-9]' [svg]='<svg'
+                 [obj]='^f ' [vtp]='<VTKFile')
+for fmt in json text svg obj vtp; do
+  o="$TMP/out.$fmt"
+  run "$WSKEL" --format "$fmt" -o "$o" "$WEIGHTED"
+  expect "--format $fmt exits 0" 0
+  if [ -s "$o" ] && grep -qE -e "${SIGN[$fmt]}" "$o"; then pass "--format $fmt: non-empty $fmt file"
+  else fail "--format $fmt: non-empty $fmt file" "missing, empty or lacking ${SIGN[$fmt]}"; fi
+  if [ -s "$OUT" ]; then fail "--format $fmt -o: stdout stays empty" "$(head -c 200 "$OUT")"
+  else pass "--format $fmt -o: stdout stays empty"; fi
+done
+run "$WSKEL" --format svg --offsets 0.25,0.5 -o "$TMP/off.svg" "$WEIGHTED"
+expect "--format svg --offsets" 0
+run "$WSKEL" --stats --check "$SQUARE"
+expect "--stats --check exits 0" 0
+for word in "variant naive" time_s peak_bytes queue_pops "check: ok"; do
+  if [[ "$ERR" == *"$word"* ]]; then pass "--stats prints $word on stderr"
+  else fail "--stats prints $word on stderr" "stderr: ${ERR:0:400}"; fi
+done
+if "$PY" -c 'import json,sys; json.load(open(sys.argv[1]))' "$OUT" 2>/dev/null; then
+  pass "--stats: stdout is still valid JSON"
+else
+  fail "--stats: stdout is still valid JSON" "$(head -c 200 "$OUT")"
+fi
+run "$WSKEL" --check "$SQUARE"
+expect "--check on a good input exits 0" 0
+if [ -z "$ERR" ]; then pass "--check alone is silent on stderr"
+else fail "--check alone is silent on stderr" "stderr: $ERR"; fi
+for rule in lower higher; do
+  run "$WSKEL" --check --collinear "$rule" "$WEIGHTED"
+  expect "--collinear $rule" 0
+done
+
+# ------------------------------------------------------ (f) output files
+run "$WSKEL" -o "$TMP/no-such-dir/out.json" "$SQUARE"
+if [ "$RC" != 0 ] && [[ "$ERR" == *"no-such-dir/out.json"* ]]; then
+  pass "-o into a missing directory fails with a message"
+else
+  fail "-o into a missing directory fails with a message" "exit $RC" "stderr: $ERR"
+fi
+if [ -e "$TMP/no-such-dir" ]; then fail "-o into a missing directory: nothing created" "$TMP/no-such-dir exists"
+else pass "-o into a missing directory: nothing created"; fi
+
+d="$TMP/replace"; mkdir "$d"
+echo "old content" >"$d/out.json"
+run "$WSKEL" -o "$d/out.json" "$BAD/dup_vertex.wpoly"
+if [ "$RC" = 1 ] && [ "$(cat "$d/out.json")" = "old content" ] && [ "$(files_in "$d")" = out.json ]; then
+  pass "-o: a failed run leaves an existing file untouched"
+else
+  fail "-o: a failed run leaves an existing file untouched" "exit $RC; dir: $(files_in "$d" | tr '\n' ' ')"
+fi
+run "$WSKEL" -o "$d/out.json" "$SQUARE"
+if [ "$RC" = 0 ] && [ -f "$d/out.json" ] && grep -q wskel-1 "$d/out.json" &&
+   [ "$(files_in "$d")" = out.json ]; then
+  pass "-o: a successful run replaces a regular file, no temporary left"
+else
+  fail "-o: a successful run replaces a regular file, no temporary left" \
+       "exit $RC; dir: $(files_in "$d" | tr '\n' ' ')"
+fi
+
+# A FIFO (like /dev/null, which must never be tested through tmp+rename) is
+# not a regular file: it is written in place and stays a FIFO.
+if mkfifo "$TMP/fifo" 2>/dev/null; then
+  timeout "$LIMIT" cat "$TMP/fifo" >"$TMP/fifo.got" &
+  BG_PID=$!
+  run "$WSKEL" -o "$TMP/fifo" "$SQUARE"
+  # If wskel renamed over the FIFO, the reader waits for a writer forever:
+  # give it a few seconds, then stop it.
+  for _ in $(seq 50); do kill -0 "$BG_PID" 2>/dev/null || break; sleep 0.1; done
+  kill "$BG_PID" 2>/dev/null
+  wait "$BG_PID" 2>/dev/null; BG_PID=""
+  expect "-o FIFO exits 0" 0
+  if [ -p "$TMP/fifo" ]; then pass "-o FIFO: still a FIFO"
+  else fail "-o FIFO: still a FIFO" "replaced by: $(ls -l "$TMP/fifo")"; fi
+  if grep -q '"format":"wskel-1"' "$TMP/fifo.got"; then pass "-o FIFO: reader got the JSON"
+  else fail "-o FIFO: reader got the JSON" "got $(wc -c <"$TMP/fifo.got") bytes"; fi
+  if compgen -G "$TMP/fifo.tmp.*" >/dev/null; then fail "-o FIFO: no temporary file" "$(ls "$TMP")"
+  else pass "-o FIFO: no temporary file"; fi
+else
+  fail "-o FIFO" "mkfifo failed in $TMP"
+fi
+
+# ------------------------------------------------------ (g) determinism
+nodes_arcs() { # the nodes and arcs of a JSON output, canonically printed
+  "$PY" -c 'import json,sys
+d = json.load(open(sys.argv[1]))
+print(json.dumps(d["nodes"])); print(json.dumps(d["arcs"]))' "$1"
+}
+if "$GEN" star --n 200 --seed 7 --weights uniform -o "$TMP/det.wpoly" 2>"$TMP/stderr"; then
+  for input in "$TMP/det.wpoly" "$GOOD/cw_weights.wpoly"; do
+    tag=${input##*/}
+    "$WSKEL" -o "$TMP/det1.json" "$input" 2>/dev/null
+    "$WSKEL" -o "$TMP/det2.json" "$input" 2>/dev/null
+    if a=$(nodes_arcs "$TMP/det1.json") && b=$(nodes_arcs "$TMP/det2.json") && [ -n "$a" ] &&
+       [ "$a" = "$b" ]; then
+      pass "determinism ($tag): identical nodes and arcs"
+    else
+      fail "determinism ($tag): identical nodes and arcs" "the two runs differ (or failed)"
+    fi
+    # the stats line carries time_s/peak_bytes; everything before it must be identical
+    if cmp -s <(grep -v '^"stats"' "$TMP/det1.json") <(grep -v '^"stats"' "$TMP/det2.json"); then
+      pass "determinism ($tag): JSON bytes identical outside stats"
+    else
+      fail "determinism ($tag): JSON bytes identical outside stats" "diff in nodes/arcs text"
+    fi
+    "$WSKEL" --format text -o "$TMP/det1.txt" "$input" 2>/dev/null
+    "$WSKEL" --format text -o "$TMP/det2.txt" "$input" 2>/dev/null
+    if [ -s "$TMP/det1.txt" ] && cmp -s "$TMP/det1.txt" "$TMP/det2.txt"; then
+      pass "determinism ($tag): text output byte-identical"
+    else
+      fail "determinism ($tag): text output byte-identical" "differs or empty"
+    fi
+  done
+else
+  fail "determinism: generate the input" "$(cat "$TMP/stderr")"
+fi
+
+# ------------------------------------------------------ (h) wskel-gen
+run "$GEN" --list
+expect "wskel-gen --list exits 0" 0
+families=$(awk 'NF {print $1}' "$OUT")
+[ -n "$families" ] && pass "wskel-gen --list is not empty" || fail "wskel-gen --list is not empty" ""
+for fam in $families; do
+  for weights in unit int; do
+    o="$TMP/gen-$fam-$weights.wpoly"
+    run "$GEN" "$fam" --n 50 --seed 3 --weights "$weights" -o "$o"
+    expect "wskel-gen $fam --n 50 --weights $weights" 0
+    [ "$RC" = 0 ] || continue
+    run "$WSKEL" --check -o "$TMP/gen.json" "$o"
+    expect "wskel --check on $fam n=50 ($weights)" 0
+    n=$("$PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["n"])' "$TMP/gen.json" 2>/dev/null)
+    if [ "$n" = 50 ]; then pass "$fam n=50 ($weights): n = 50 in the output"
+    else fail "$fam n=50 ($weights): n = 50 in the output" "n = '$n'"; fi
+  done
+  run "$GEN" "$fam" --n 50 --seed 3 --format graphml -o "$TMP/gen-$fam.graphml"
+  expect "wskel-gen $fam --format graphml" 0
+  run "$WSKEL" --check "$TMP/gen-$fam.graphml"
+  expect "wskel --check on $fam n=50 (graphml)" 0
+done
+"$GEN" star --n 60 --seed 11 -o "$TMP/s1.wpoly" 2>/dev/null
+"$GEN" star --n 60 --seed 11 -o "$TMP/s2.wpoly" 2>/dev/null
+"$GEN" star --n 60 --seed 12 -o "$TMP/s3.wpoly" 2>/dev/null
+if [ -s "$TMP/s1.wpoly" ] && cmp -s "$TMP/s1.wpoly" "$TMP/s2.wpoly" && ! cmp -s "$TMP/s1.wpoly" "$TMP/s3.wpoly"; then
+  pass "wskel-gen: same seed same bytes, other seed other polygon"
+else
+  fail "wskel-gen: same seed same bytes, other seed other polygon" ""
+fi
+
+gen_case() { # gen_case CODE SUBSTRING ARGS...
+  local code="$1" sub="$2"; shift 2
+  local d="$TMP/genfail"
+  rm -rf "$d"; mkdir "$d"
+  run "$GEN" "$@" -o "$d/out.wpoly"
+  expect "wskel-gen $* -> $code" "$code" "$sub"
+  if [ -n "$(files_in "$d")" ]; then fail "wskel-gen $*: no file left behind" "$(files_in "$d")"
+  else pass "wskel-gen $*: no file left behind"; fi
+}
+gen_case 1 "r=60 > n/2=50" notched --n 100 --r 60
+gen_case 1 "crossing" crossing --n 10 --r 5
+gen_case 1 "odd" rectilinear --n 51
+gen_case 1 "star" star --n 2
+gen_case 64 "unknown family" nosuchfamily --n 50
+gen_case 64 "--n is required" star
+gen_case 64 "--n must be" star --n abc
+gen_case 64 "unknown option" star --n 50 --bogus
+gen_case 64 "unknown weight mode" star --n 50 --weights heavy
+gen_case 64 "unknown format" star --n 50 --format svg
+gen_case 64 "--seed must be" star --n 50 --seed -1
+run "$GEN" --help
+expect "wskel-gen --help exits 0" 0
+
+# ------------------------------------------------------ summary
+echo "cli tests: $PASSED passed, $FAILED failed"
+[ "$FAILED" -eq 0 ]
