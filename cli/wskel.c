@@ -159,6 +159,8 @@ int main(int argc, char **argv) {
     if (!input) return usage_error("%s", "no input file given");
     const wk_variant *V = wk_variant_find(variant);
     if (!V) return usage_error("unknown variant '%s' (see --list-variants)", variant);
+    if (offsets_arg && strcmp(format, "svg") != 0)
+        fprintf(stderr, "wskel: note: --offsets only affects --format svg\n");
     if (k_given && !(V->flags & WK_VARIANT_USES_K))
         fprintf(stderr, "wskel: note: variant %s ignores --k\n", V->name);
     double *offsets = NULL;
@@ -226,7 +228,8 @@ int main(int argc, char **argv) {
         }
         out = fopen(atomic ? tmp : outpath, "w");
         if (!out) {
-            WK_FAIL(&R, WK_EINPUT, outpath, 0, "cannot write: %s", strerror(errno));
+            /* not an input problem: exit 2, as wskel-gen does */
+            WK_FAIL(&R, WK_EALGO, outpath, 0, "cannot write: %s", strerror(errno));
             rc = report(&R);
             goto done;
         }

@@ -341,10 +341,15 @@ wk_status wk_skeleton_merge_pass_through(wk_run *R, wk_skeleton *S);
 
 /* ------------------------------------------------------------ tolerance */
 
-/* The one tolerance policy (see engine/tolerance.h for the reasoning):
-** lengths are compared with WK_TOL_REL times the polygon's scale (the
-** diagonal of its bounding box); times with the same relative tolerance
-** divided by the largest weight. */
+/* The one tolerance policy.  Decisions on input (simplicity, orientation,
+** reflexness) are exact.  Constructions are in double; two events are
+** simultaneous when their times differ by at most WK_TOL_REL * scale / wmax
+** and two event points coincide when they are within WK_TOL_REL * scale,
+** where scale is the diagonal of the polygon's bounding box (a vertex moving
+** at speed s also arrives at a point within s times the time tolerance).
+** Doubles carry ~1e-16 relative error, so 1e-9 leaves room for the error of
+** a constructed event while staying far below any feature the validator can
+** see (its default tolerance is 1e-6 * scale). */
 #define WK_TOL_REL 1e-9
 double wk_polygon_scale(const wk_polygon *P);
 

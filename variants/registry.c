@@ -1,7 +1,7 @@
 /*
 ** registry.c: the static const list of variants (Redis's backend table).
-** To add a variant: declare it in variant.h, list it here, add its folder's
-** sources to the Makefile's VARIANT_SRC.
+** To add a variant: declare it in variant.h and list it here; the Makefile
+** builds every .c file of every folder under variants/ into the library.
 */
 #include "variant.h"
 

@@ -618,6 +618,33 @@ static wk_status plan(naive *N, double t, bool *again) {
             N->slot[c->first + c->count++] = i | NODE_BIT; /* incoming at to */
         }
     }
+    /* Overlap: an incoming and an outgoing sub-piece leaving a node in the
+    ** same direction are antiparallel edges lying on each other.  Their
+    ** common part vanishes now, so the nearer far end (an untouched vertex
+    ** lying on the other piece) meets it: make it a node and plan again. */
+    for (uint32_t k = 0; k < N->n_cl; k++) {
+        nv_cluster *c = &N->cl[k];
+        for (uint32_t j = 0; j < c->count; j++) {
+            uint32_t in = N->slot[c->first + j];
+            if (!(in & NODE_BIT)) continue;
+            in &= ~NODE_BIT;
+            double a = angle_of(&N->L[N->sub[in].edge], true);
+            for (uint32_t m = 0; m < c->count; m++) {
+                uint32_t out = N->slot[c->first + m];
+                if (out & NODE_BIT) continue;
+                double d = fabs(a - angle_of(&N->L[N->sub[out].edge], false));
+                if (d > 1e-12 && fabs(d - TWO_PI) > 1e-12) continue;
+                wk_point pin = point_pos(N, N->sub[in].from, t);
+                wk_point pout = point_pos(N, N->sub[out].to, t);
+                uint32_t far = dist2(pin, c->p) < dist2(pout, c->p) ? N->sub[in].from : N->sub[out].to;
+                if (IS_NODE(far)) continue; /* equal pieces were cancelled; spike check below */
+                if (push_u32(R, &N->forced, &N->n_forced, &N->cap_forced, far) != WK_OK)
+                    return R->err.code;
+                *again = true;
+            }
+        }
+    }
+    if (*again) return WK_OK;
     for (uint32_t k = 0; k < N->n_cl; k++) {
         nv_cluster *c = &N->cl[k];
         uint32_t nin = 0, nout = 0;
