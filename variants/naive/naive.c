@@ -74,6 +74,7 @@ typedef struct nv_vertex {
     uint32_t ev_a, ev_b; /* edge event: ev_b = next; split: target piece a->b */
     uint32_t at;       /* group scratch: node index or WK_NONE */
     uint32_t seen;     /* group scratch: stamp of the last cycle walk */
+    uint32_t cyc;      /* group scratch: index of its cycle among the touched ones */
 } nv_vertex;
 
 typedef struct nv_cluster {
@@ -121,6 +122,7 @@ typedef struct naive {
     nv_pair *pair; uint32_t n_pair, cap_pair;
     uint32_t *slot; uint32_t n_slot, cap_slot;
     uint32_t *fresh; uint32_t n_fresh, cap_fresh;
+    uint8_t *cycflag; uint32_t n_cyc, cap_cycflag;
 } naive;
 
 static wk_point pos_at(const nv_vertex *v, double t) {
@@ -355,6 +357,7 @@ static int cmp_pinch(const void *a, const void *b) {
 static wk_status collect_cycles(naive *N) {
     N->stamp++;
     N->n_comp = 0;
+    N->n_cyc = 0;
     for (int pass = 0; pass < 2; pass++) {
         uint32_t n = pass ? N->n_forced : N->n_seeds;
         const uint32_t *src = pass ? N->forced : N->seeds;
@@ -365,10 +368,12 @@ static wk_status collect_cycles(naive *N) {
             do {
                 N->v[u].seen = N->stamp;
                 N->v[u].at = WK_NONE;
+                N->v[u].cyc = N->n_cyc;
                 if (push_u32(N->R, &N->comp, &N->n_comp, &N->cap_comp, u) != WK_OK)
                     return N->R->err.code;
                 u = N->v[u].next;
             } while (u != s);
+            N->n_cyc++;
         }
     }
     return WK_OK;
@@ -851,7 +856,7 @@ static wk_status commit(naive *N, double t) {
 }
 
 /* Count what happened in this group for the observer (counts only). */
-static void count_group(naive *N, double t) {
+static wk_status count_group(naive *N, double t) {
     wk_run *R = N->R;
     for (uint32_t i = 0; i < N->n_comp; i++) {
         const nv_vertex *u = &N->v[N->comp[i]];
@@ -868,8 +873,31 @@ static void count_group(naive *N, double t) {
         if (c->reflex >= 2) wk_notify_event(R, WK_EV_MULTI_SPLIT, &e);
         else if (c->reflex == 1 && c->pinches) wk_notify_event(R, WK_EV_SPLIT, &e);
         else if (c->arrive >= 2) wk_notify_event(R, WK_EV_EDGE, &e);
-        if (c->pairs == 0 && c->arrive > 0) wk_notify_event(R, WK_EV_VANISH, &e);
     }
+    /* a touched cycle vanished if every vertex of it arrived at a node and
+    ** none of its nodes starts a new vertex (flag 1: alive) */
+    if (wk_grow(R, (void **)&N->cycflag, &N->cap_cycflag, N->n_cyc + 1, 1) != WK_OK) return R->err.code;
+    memset(N->cycflag, 0, N->n_cyc);
+    for (uint32_t i = 0; i < N->n_comp; i++) {
+        const nv_vertex *u = &N->v[N->comp[i]];
+        if (u->at == WK_NONE || N->cl[u->at].pairs) N->cycflag[u->cyc] = 1;
+    }
+    for (uint32_t c = 0; c < N->n_cyc; c++) {
+        if (N->cycflag[c]) continue;
+        wk_event e = {t, 0, 0, c, WK_NONE, WK_NONE};
+        wk_notify_event(R, WK_EV_VANISH, &e);
+    }
+    /* an edge event (no piece cut) whose one new vertex is reflex: 000's
+    ** reflex-preserving edge event */
+    for (uint32_t i = 0; i < N->n_pair; i++) {
+        const nv_pair *p = &N->pair[i];
+        const nv_cluster *c = &N->cl[p->node];
+        if (p->vertex == WK_NONE || c->pinches || c->arrive < 2 || c->pairs != 1) continue;
+        if (!N->v[p->vertex].reflex) continue;
+        wk_event e = {t, c->p.x, c->p.y, p->node, c->arrive, c->reflex};
+        wk_notify_event(R, WK_EV_REFLEX_EDGE, &e);
+    }
+    return WK_OK;
 }
 
 /* After a group: new candidates for fresh vertices, their predecessors and
@@ -951,8 +979,7 @@ static wk_status process_group(naive *N, double t) {
         for (uint32_t i = 0; i < N->n_pair; i++) fprintf(stderr, " pair %u: in %u out %u node %u\n", i, N->pair[i].in, N->pair[i].out, N->pair[i].node);
     }
 #endif
-    count_group(N, t);
-    if (commit(N, t) != WK_OK) return R->err.code;
+    if (commit(N, t) != WK_OK || count_group(N, t) != WK_OK) return R->err.code;
     /* collinear rule for fresh vertices between parallel edges */
     for (uint32_t i = 0; i < N->n_fresh; i++) {
         uint32_t f = N->fresh[i];
@@ -1069,6 +1096,7 @@ done:
     WK_FREE_ARRAY(R, N.pair, N.cap_pair);
     WK_FREE_ARRAY(R, N.slot, N.cap_slot);
     WK_FREE_ARRAY(R, N.fresh, N.cap_fresh);
+    WK_FREE_ARRAY(R, N.cycflag, N.cap_cycflag);
     if (st != WK_OK) {
         wk_skeleton_free(R, N.S);
         return st;
