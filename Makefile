@@ -73,7 +73,7 @@ $(BA)/tests/run_tests: $(TEST_SRC:%.c=$(BA)/%.o) $(LIBASAN)
 # Unit and property tests, then the same under ASan/UBSan, then the
 # command-line and Python-side tests (exit codes, messages, VTK read-back,
 # CGAL agreement).
-test: all test-unit test-asan test-cli test-py
+test: all test-unit test-asan test-cli test-py test-bench
 test-unit: $(B)/tests/run_tests
 	$(B)/tests/run_tests --jobs 2
 test-asan: $(BA)/tests/run_tests

@@ -12,8 +12,7 @@
 
 #define WK_PARALLEL_SIN 1e-12
 
-void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L) {
-    wk_point a = P->p[e], b = P->p[(e + 1) % P->n];
+void wk_offset_line_of_points(wk_point a, wk_point b, double w, wk_offset_line *L) {
     double dx = b.x - a.x, dy = b.y - a.y;
     double len = hypot(dx, dy);
     L->ux = dx / len;
@@ -23,7 +22,22 @@ void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L) 
     /* c from the midpoint: both endpoints then lie within rounding of the line */
     double mx = 0.5 * (a.x + b.x), my = 0.5 * (a.y + b.y);
     L->c = L->nx * mx + L->ny * my;
-    L->w = P->w[e];
+    L->w = w;
+}
+
+void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L) {
+    wk_offset_line_of_points(P->p[e], P->p[(e + 1) % P->n], P->w[e], L);
+}
+
+wk_point wk_polygon_centre(const wk_polygon *P) {
+    double x0 = P->p[0].x, x1 = x0, y0 = P->p[0].y, y1 = y0;
+    for (uint32_t i = 1; i < P->n; i++) {
+        x0 = fmin(x0, P->p[i].x);
+        x1 = fmax(x1, P->p[i].x);
+        y0 = fmin(y0, P->p[i].y);
+        y1 = fmax(y1, P->p[i].y);
+    }
+    return (wk_point){0.5 * x0 + 0.5 * x1, 0.5 * y0 + 0.5 * y1};
 }
 
 wk_velocity_kind wk_vertex_velocity(const wk_offset_line *a, const wk_offset_line *b,

@@ -30,6 +30,12 @@ typedef enum wk_velocity_kind {
 } wk_velocity_kind;
 
 void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L);
+/* The same for the edge a -> b of weight w (e.g. in translated coordinates). */
+void wk_offset_line_of_points(wk_point a, wk_point b, double w, wk_offset_line *L);
+/* The centre of P's bounding box.  Variants compute in coordinates relative
+** to it: far from the origin (a map in UTM metres, say) the absolute
+** rounding of each coordinate would otherwise swamp small features. */
+wk_point wk_polygon_centre(const wk_polygon *P);
 /* Velocity of a vertex between offset lines a (before) and b (after). */
 wk_velocity_kind wk_vertex_velocity(const wk_offset_line *a, const wk_offset_line *b,
                                     wk_point *v);

@@ -165,11 +165,17 @@ def load(path):
 
 
 def default_tol(d):
-    """1e-7 times the bounding-box diagonal of the input vertices of d."""
+    """1e-7 times the bounding-box diagonal of the input vertices of d, but at
+    least 64 ulps of the largest coordinate magnitude."""
     n, pts, _ = _check(d, "skeleton")
     xs = [p[0] for p in pts[:n]]
     ys = [p[1] for p in pts[:n]]
-    return 1e-7 * math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+    diag = math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+    # Far from the origin the coordinates themselves carry absolute rounding
+    # (ulp of the largest magnitude); every implementation's constructed
+    # nodes inherit some tens of ulps of it, whatever its relative accuracy.
+    mag = max(max(abs(v) for v in xs), max(abs(v) for v in ys))
+    return max(1e-7 * diag, 64 * mag * 2.0 ** -52)
 
 
 # ------------------------------------------------------------ normalising

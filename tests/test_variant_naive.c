@@ -18,8 +18,12 @@
 **     regular polygons built here, unit and random weights;
 **   - hand-made cases in tests/data/hand (see its README.md): interior nodes
 **     computed by hand (matched as a set), arc counts, chosen arcs, both
-**     collinear rules, weighted triangles solved from their three offset
+**     collinear rules (also a heavier edge catching up with a lighter
+**     parallel one), weighted triangles solved from their three offset
 **     lines, translation by (1e6, 1e6), clockwise input;
+**   - extra cases: generated polygons outside the property grid on which a
+**     wider exploratory sweep found naive failing (naive/extra_sweep_cases);
+**     with unit weights the reflex-preserving edge event counter stays 0;
 **   - determinism: two runs give bit-identical nodes, arcs and counters;
 **   - fault injection: every allocation of a run fails in turn; each such
 **     run returns WK_ENOMEM, no output, and leaves zero live bytes.
@@ -672,6 +676,37 @@ Test(naive, hand_collinear_different_weights_both_rules) {
     cr_expect(memcmp(got[0], got[1], sizeof got[0]) != 0, "the two collinear rules agree");
 }
 
+/* A heavier parallel edge catches up with a lighter one after an event. */
+Test(naive, hand_collinear_catch_up_both_rules) {
+    for (int rule = 0; rule < 2; rule++) {
+        wk_run R;
+        wk_run_init(&R);
+        R.opt.collinear = rule ? WK_COLLINEAR_HIGHER : WK_COLLINEAR_LOWER;
+        const char *what = rule ? "collinear_catch_up (HIGHER)" : "collinear_catch_up (LOWER)";
+        wk_polygon *P = read_hand(&R, "collinear_catch_up");
+        wk_skeleton *S = solve_valid(&R, P, what);
+        if (rule == 0) {
+            const wk_node want[4] = {{30, 10, 10},
+                                     {30, 90, 10},
+                                     {410.0 / 3, 40.0 / 3, 190.0 / 3},
+                                     {410.0 / 3, 110.0 / 3, 190.0 / 3}};
+            expect_nodes(what, P, S, want, 4, 9);
+            uint32_t a = node_at(P, S, 30, 10), b = node_at(P, S, 30, 90);
+            cr_expect(has_arc(S, a, b, 0, 2), "%s: no arc along the removed edge 0", what);
+        } else {
+            const wk_node want[4] = {{30, 10, 10}, {30, -40, 10}, {150, 0, 50}, {150, 50, 50}};
+            expect_nodes(what, P, S, want, 4, 9);
+            uint32_t a = node_at(P, S, 30, 10), b = node_at(P, S, 30, -40);
+            cr_expect(has_arc(S, a, b, 0, 2), "%s: no arc along the removed edge 2", what);
+        }
+        cr_expect_geq(R.counters.collinear_resolutions, 1, "%s: collinear_resolutions = %llu",
+                      what, (unsigned long long)R.counters.collinear_resolutions);
+        wk_skeleton_free(&R, S);
+        wk_polygon_free(&R, P);
+        ASSERT_CLEAN_CLOSE(R);
+    }
+}
+
 Test(naive, hand_weighted_square) {
     const wk_node want[2] = {{0.25, 0.75, 0.25}, {0.75, 0.75, 0.25}};
     hand_case("weighted_square", want, 2, 5);
@@ -756,10 +791,10 @@ Test(naive, hand_reflex_preserving_edge_event) {
     /* the chamfer ends run into x; the reflex vertex of edges 5 and 0 goes on to (1,1) */
     cr_expect(has_arc(S, 6, x, 5, 6) && has_arc(S, 0, x, 6, 0), "chamfer arcs missing");
     cr_expect(has_arc(S, x, c, 5, 0), "no arc from the event point to (1,1) between edges 5 and 0");
-    fprintf(stderr, "naive hand: reflex_preserving: reflex_preserving_edge_events = %llu, "
-                    "edge_events = %llu\n",
-            (unsigned long long)R.counters.reflex_preserving_edge_events,
-            (unsigned long long)R.counters.edge_events);
+    /* exactly one edge event leaves a reflex vertex: the chamfer's */
+    cr_expect_eq(R.counters.reflex_preserving_edge_events, 1,
+                 "reflex_preserving: reflex_preserving_edge_events = %llu, want 1",
+                 (unsigned long long)R.counters.reflex_preserving_edge_events);
     wk_skeleton_free(&R, S);
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
@@ -865,6 +900,113 @@ Test(naive, clockwise_input_same_skeleton) {
         wk_polygon_free(&R, P);
         ASSERT_CLEAN_CLOSE(R);
     }
+}
+
+/* With unit weights an edge event never leaves a reflex vertex: an edge
+** between vertices of interior angles a and b shrinks only if
+** cot(a/2) + cot(b/2) > 0, i.e. a + b < 2 pi, and the new vertex has angle
+** a + b - pi < pi.  So the counter must stay 0 (000, section 1). */
+Test(naive, unit_weights_no_reflex_preserving_edge_events) {
+    static const uint32_t sizes[] = {8, 20, 50, 200};
+    unsigned cases = 0;
+    for (size_t fi = 0; wk_gen_families[fi]; fi++)
+        for (size_t si = 0; si < sizeof sizes / sizeof sizes[0]; si++)
+            for (uint64_t seed = 1; seed <= 3; seed++) {
+                wk_run R;
+                wk_run_init(&R);
+                wk_gen_params g;
+                wk_gen_params_init(&g);
+                g.family = wk_gen_families[fi];
+                g.n = sizes[si];
+                g.seed = seed;
+                wk_polygon *P = NULL;
+                if (wk_generate(&R, &g, &P) != WK_OK) {
+                    cr_assert_eq(wk_run_close(&R), 0);
+                    continue;
+                }
+                wk_skeleton *S = NULL;
+                if (wk_solve(&R, naive(), P, &S, NULL, NULL) == WK_OK) { /* failures: property tests */
+                    cases++;
+                    cr_expect_eq(R.counters.reflex_preserving_edge_events, 0,
+                                 "%s n=%u seed=%llu (unit weights): "
+                                 "reflex_preserving_edge_events = %llu",
+                                 g.family, g.n, (unsigned long long)seed,
+                                 (unsigned long long)R.counters.reflex_preserving_edge_events);
+                    wk_skeleton_free(&R, S);
+                }
+                wk_polygon_free(&R, P);
+                ASSERT_CLEAN_CLOSE(R);
+            }
+    cr_assert_gt(cases, 0);
+}
+
+/* -------------------------------------------- beyond the sweep's grid */
+
+/* Generated polygons outside the property grid (other n and seeds, both
+** collinear rules, weights that differ in the 7th digit) on which naive
+** failed in a wider exploratory sweep; each must now validate. */
+typedef struct extra_case {
+    const char *family;
+    uint32_t n;
+    uint64_t seed;
+    const char *weights;
+    wk_collinear_rule rule;
+} extra_case;
+
+static const extra_case EXTRA_CASES[] = {
+    /* a heavier vertical wall catches up with a lighter parallel one (the
+    ** collinear rule after an event) while other events happen at once */
+    {"rectilinear", 34, 59, "int", WK_COLLINEAR_LOWER},
+    {"rectilinear", 38, 131, "int", WK_COLLINEAR_LOWER},
+    {"rectilinear", 150, 3, "int", WK_COLLINEAR_HIGHER},
+    {"rectilinear", 150, 13, "int", WK_COLLINEAR_HIGHER},
+    /* nearly equal weights: events that nearly coincide */
+    {"rectilinear", 18, 26, "uniform:1:1.000001", WK_COLLINEAR_LOWER},
+    {"rectilinear", 18, 41, "uniform:1:1.000001", WK_COLLINEAR_HIGHER},
+    {"rectilinear", 30, 120, "two:1:1.0000001", WK_COLLINEAR_LOWER},
+    {"comb", 30, 51, "two:1:1.0000001", WK_COLLINEAR_LOWER},
+    {"comb", 32, 10, "two:1:1.0000001", WK_COLLINEAR_LOWER},
+    {"comb", 32, 11, "two:1:1.0000001", WK_COLLINEAR_LOWER},
+};
+
+Test(naive, extra_sweep_cases) {
+    unsigned good = 0, total = 0;
+    for (size_t k = 0; k < sizeof EXTRA_CASES / sizeof EXTRA_CASES[0]; k++) {
+        const extra_case *c = &EXTRA_CASES[k];
+        wk_run R;
+        wk_run_init(&R);
+        R.opt.collinear = c->rule;
+        wk_polygon *P = generate(&R, c->family, c->n, c->seed, c->weights);
+        const char *rule = c->rule == WK_COLLINEAR_HIGHER ? "higher" : "lower";
+        wk_skeleton *S = NULL;
+        const char *stage = "naive";
+        wk_status st = wk_solve(&R, naive(), P, &S, NULL, NULL);
+        if (st == WK_OK) {
+            stage = "validate";
+            st = wk_validate(&R, P, S, 0, NULL);
+        }
+        total++;
+        if (st == WK_OK) {
+            good++;
+        } else {
+            char msg[1024];
+            err_text(&R, msg, sizeof msg);
+            fprintf(stderr,
+                    "naive extra: FAIL %s n=%u seed=%llu weights=%s collinear=%s: %s %s: %s\n"
+                    "  reproduce: bin/wskel-gen %s --n %u --seed %llu --weights %s"
+                    " | bin/wskel --check --collinear %s -\n",
+                    c->family, c->n, (unsigned long long)c->seed, c->weights, rule, stage,
+                    wk_status_name(st), msg, c->family, c->n, (unsigned long long)c->seed,
+                    c->weights, rule);
+            cr_expect_fail("%s n=%u seed=%llu weights=%s collinear=%s: %s %s: %s", c->family,
+                           c->n, (unsigned long long)c->seed, c->weights, rule, stage,
+                           wk_status_name(st), msg);
+        }
+        if (S) wk_skeleton_free(&R, S);
+        wk_polygon_free(&R, P);
+        ASSERT_CLEAN_CLOSE(R);
+    }
+    fprintf(stderr, "naive extra: %u/%u valid\n", good, total);
 }
 
 /* ---------------------------------------------------- 4. determinism */

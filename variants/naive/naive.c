@@ -111,6 +111,7 @@ typedef struct naive {
     uint32_t nv, cap_v;
     wk_event_queue Q;
     double eps_d, eps_t, t_now;
+    wk_point origin;   /* all positions are relative to it (bounding-box centre) */
     uint32_t stamp;
     /* group scratch, kept between groups */
     uint32_t *seeds; uint32_t n_seeds, cap_seeds;
@@ -123,6 +124,7 @@ typedef struct naive {
     uint32_t *slot; uint32_t n_slot, cap_slot;
     uint32_t *fresh; uint32_t n_fresh, cap_fresh;
     uint8_t *cycflag; uint32_t n_cyc, cap_cycflag;
+    uint32_t *run, *run_node; uint32_t n_run, cap_run, cap_run_node; /* collinear runs */
 } naive;
 
 static wk_point pos_at(const nv_vertex *v, double t) {
@@ -709,7 +711,9 @@ static uint32_t sk_node(naive *N, uint32_t k, double t) {
     nv_cluster *c = &N->cl[k];
     if (c->sk == WK_NONE) {
         uint32_t id;
-        if (wk_skeleton_add_node(N->R, N->S, c->p.x, c->p.y, t, &id) != WK_OK) return WK_NONE;
+        if (wk_skeleton_add_node(N->R, N->S, c->p.x + N->origin.x, c->p.y + N->origin.y, t, &id) !=
+            WK_OK)
+            return WK_NONE;
         c->sk = id;
     }
     return c->sk;
@@ -724,61 +728,131 @@ static wk_status mark_fresh(naive *N, uint32_t v) {
     return push_u32(N->R, &N->fresh, &N->n_fresh, &N->cap_fresh, v);
 }
 
-/* The collinear rule: vertex vi sits between parallel edges of different
-** weight.  The losing edge's piece is swept at once (an arc at time t along
-** it) and the winner is joined to the far neighbour. */
+/* Parallel edges that share a vertex lie on one line: the vertex between
+** them has WK_VEL_STRAIGHT (equal weights) or WK_VEL_COLLINEAR kinetics. */
+static bool on_one_line(const nv_vertex *u) {
+    return u->alive && (u->vkind == WK_VEL_COLLINEAR || u->vkind == WK_VEL_STRAIGHT);
+}
+
+/* The node where run vertex i (N->run[i]) is at time t, created once: its
+** own start node if it was born now, else a new node at its position. */
+static wk_status run_node(naive *N, uint32_t i, double t, uint32_t *node) {
+    if (N->run_node[i] == WK_NONE) {
+        nv_vertex *U = &N->v[N->run[i]];
+        if (U->t0 == t) {
+            N->run_node[i] = U->node;
+        } else {
+            wk_point q = pos_at(U, t);
+            if (wk_skeleton_add_node(N->R, N->S, q.x + N->origin.x, q.y + N->origin.y, t,
+                                     &N->run_node[i]) != WK_OK)
+                return N->R->err.code;
+        }
+    }
+    *node = N->run_node[i];
+    return WK_OK;
+}
+
+/* The collinear rule (000, section 1).  Vertex vi sits between parallel
+** edges of different weight, which no moving vertex can join.  Take the
+** maximal run of consecutive pieces on that line (a run, not one pair: three
+** parallel walls can meet at once); the winning weight (lowest by default,
+** highest with --collinear higher) survives, every other piece of the run is
+** swept at once, leaving an arc along it at time t between its face and the
+** surviving piece that extends over it (the one before it, else the one
+** after it).  Vertices of the run that touch a swept piece end here; new
+** vertices join the surviving pieces. */
 static wk_status slide(naive *N, uint32_t vi, double t) {
     wk_run *R = N->R;
-    for (int guard = 0; guard < 1 << 20; guard++) {
-        nv_vertex *V = &N->v[vi];
-        if (!V->alive || V->vkind != WK_VEL_COLLINEAR) return WK_OK;
-        double wi = N->L[V->ein].w, wo = N->L[V->eout].w;
-        bool out_loses = (N->R->opt.collinear == WK_COLLINEAR_LOWER) ? wo > wi : wo < wi;
-        uint32_t f = out_loses ? V->next : V->prev;
-        if (f == vi || (N->v[f].next == vi && N->v[f].prev == vi))
-            return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: degenerate cycle at t = %.17g", t);
-        nv_vertex *F = &N->v[f];
-        wk_point pf = pos_at(F, t);
-        uint32_t nf;
-        if (F->t0 == t) {
-            nf = F->node; /* F was born here, now: its node is this place */
-        } else {
-            if (wk_skeleton_add_node(R, N->S, pf.x, pf.y, t, &nf) != WK_OK) return R->err.code;
-        }
-        wk_event e = {t, pf.x, pf.y, V->ein, V->eout, WK_NONE};
-        wk_notify_event(R, WK_EV_COLLINEAR, &e);
-        uint32_t g;
-        V = &N->v[vi];
-        F = &N->v[f];
-        if (out_loses) {
-            /* piece V -> F on edge eout (face on its right), winner ein on its left */
-            if (add_arc(N, V->node, nf, V->ein, V->eout) != WK_OK) return R->err.code;
-            uint32_t ein = V->ein, p = V->prev, q = F->next, feout = F->eout;
-            if (terminate(N, f, nf) != WK_OK) return R->err.code;
-            V = &N->v[vi];
-            V->alive = 0;
-            wk_event_queue_remove(R, &N->Q, vi);
-            g = new_vertex(N, ein, feout, pf, t, nf);
-            if (g == WK_NONE) return R->err.code;
-            link(N, p, g);
-            link(N, g, q);
-        } else {
-            /* piece F -> V on edge ein (face on its right), winner eout on its left */
-            if (add_arc(N, nf, V->node, V->eout, V->ein) != WK_OK) return R->err.code;
-            uint32_t eout = V->eout, p = F->prev, q = V->next, fein = F->ein;
-            if (terminate(N, f, nf) != WK_OK) return R->err.code;
-            V = &N->v[vi];
-            V->alive = 0;
-            wk_event_queue_remove(R, &N->Q, vi);
-            g = new_vertex(N, fein, eout, pf, t, nf);
-            if (g == WK_NONE) return R->err.code;
-            link(N, p, g);
-            link(N, g, q);
-        }
-        if (mark_fresh(N, g) != WK_OK) return R->err.code;
-        vi = g;
+    if (!on_one_line(&N->v[vi])) return WK_OK;
+    /* run[0]: the vertex before the run's first piece; run[m]: after its
+    ** last; run[1..m-1] lie between pieces of the run */
+    uint32_t u0 = vi, um = vi, guard = 0;
+    while (on_one_line(&N->v[u0])) {
+        u0 = N->v[u0].prev;
+        if (++guard > N->nv) goto cyclic;
     }
-    return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: collinear rule does not terminate");
+    while (on_one_line(&N->v[um])) {
+        um = N->v[um].next;
+        if (++guard > N->nv) goto cyclic;
+    }
+    N->n_run = 0;
+    for (uint32_t u = u0;; u = N->v[u].next) {
+        if (WK_GROW(R, N->run, N->cap_run, N->n_run + 1) != WK_OK ||
+            WK_GROW(R, N->run_node, N->cap_run_node, N->n_run + 1) != WK_OK)
+            return R->err.code;
+        N->run[N->n_run] = u;
+        N->run_node[N->n_run++] = WK_NONE;
+        if (u == um) break;
+    }
+    uint32_t m = N->n_run - 1;
+    /* piece i (1..m) runs run[i-1] -> run[i] on edge piece_edge(i) */
+#define PIECE_EDGE(i) (N->v[N->run[(i) - 1]].eout)
+    bool lower = R->opt.collinear == WK_COLLINEAR_LOWER;
+    double best = N->L[PIECE_EDGE(1)].w;
+    for (uint32_t i = 2; i <= m; i++) {
+        double w = N->L[PIECE_EDGE(i)].w;
+        if (lower ? w < best : w > best) best = w;
+    }
+    uint32_t first_winner = WK_NONE;
+    for (uint32_t i = 1; i <= m && first_winner == WK_NONE; i++)
+        if (N->L[PIECE_EDGE(i)].w == best) first_winner = PIECE_EDGE(i);
+    /* arcs along the losing pieces */
+    uint32_t ext = first_winner;
+    bool changed = false;
+    for (uint32_t i = 1; i <= m; i++) {
+        uint32_t e = PIECE_EDGE(i);
+        if (N->L[e].w == best) {
+            ext = e;
+            continue;
+        }
+        uint32_t a, b;
+        if (run_node(N, i - 1, t, &a) != WK_OK || run_node(N, i, t, &b) != WK_OK) return R->err.code;
+        if (add_arc(N, a, b, ext, e) != WK_OK) return R->err.code;
+        wk_event ev = {t, 0, 0, e, ext, WK_NONE};
+        wk_notify_event(R, WK_EV_COLLINEAR, &ev);
+        changed = true;
+    }
+    if (!changed) return WK_OK;
+    /* rebuild: cur is the last vertex of the new wavefront, cur_out the
+    ** edge leaving it */
+    uint32_t cur = N->v[u0].prev, cur_out = N->v[u0].ein;
+    for (uint32_t i = 0; i <= m; i++) {
+        uint32_t u = N->run[i];
+        nv_vertex *U = &N->v[u];
+        uint32_t ein = i == 0 ? U->ein : PIECE_EDGE(i);
+        uint32_t eout = i == m ? U->eout : PIECE_EDGE(i + 1);
+        bool lost_before = i > 0 && N->L[ein].w != best;
+        bool lost_after = i < m && N->L[eout].w != best;
+        if (!lost_before && !lost_after) {
+            link(N, cur, u); /* untouched */
+            cur = u;
+            cur_out = U->eout;
+            continue;
+        }
+        uint32_t nd;
+        if (run_node(N, i, t, &nd) != WK_OK) return R->err.code;
+        wk_point q = pos_at(U, t);
+        uint32_t p_next = U->next;
+        if (terminate(N, u, nd) != WK_OK) return R->err.code;
+        /* the edge that leaves this point in the new wavefront */
+        uint32_t leave = i == m ? eout : (lost_after ? cur_out : eout);
+        if (i == 0) leave = first_winner;
+        if (lost_after && i > 0 && i < m && N->L[ein].w == best) leave = ein;
+        if (i < m && !lost_after) leave = eout;
+        if (leave != cur_out) {
+            uint32_t g = new_vertex(N, cur_out, leave, q, t, nd);
+            if (g == WK_NONE || mark_fresh(N, g) != WK_OK) return R->err.code;
+            link(N, cur, g);
+            cur = g;
+            cur_out = leave;
+        }
+        if (i == m) link(N, cur, p_next);
+    }
+#undef PIECE_EDGE
+    return WK_OK;
+cyclic:
+    return WK_FAIL(R, WK_EALGO, N->P->name, 0,
+                   "naive: a whole wavefront cycle lies on one line at t = %.17g", t);
 }
 
 /* Follow pass-through pairs (same edge on both sides: no vertex) to the
@@ -971,14 +1045,6 @@ static wk_status process_group(naive *N, double t) {
         if (round > 64)
             return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: too many spikes at t = %.17g", t);
     }
-#ifdef NAIVE_DEBUG
-    if (getenv("NAIVE_TRACE") && t >= atof(getenv("NAIVE_TRACE"))) {
-        fprintf(stderr, "PLAN t=%.17g clusters %u subs %u pairs %u pins %u\n", t, N->n_cl, N->n_sub, N->n_pair, N->n_pin);
-        for (uint32_t k = 0; k < N->n_cl; k++) fprintf(stderr, " cl %u %.17g %.17g\n", k, N->cl[k].p.x, N->cl[k].p.y);
-        for (uint32_t i = 0; i < N->n_sub; i++) fprintf(stderr, " sub %u: %x -> %x e%u dead %d  ang %.6f\n", i, N->sub[i].from, N->sub[i].to, N->sub[i].edge, N->sub[i].dead, atan2(N->L[N->sub[i].edge].uy, N->L[N->sub[i].edge].ux));
-        for (uint32_t i = 0; i < N->n_pair; i++) fprintf(stderr, " pair %u: in %u out %u node %u\n", i, N->pair[i].in, N->pair[i].out, N->pair[i].node);
-    }
-#endif
     if (commit(N, t) != WK_OK || count_group(N, t) != WK_OK) return R->err.code;
     /* collinear rule for fresh vertices between parallel edges */
     for (uint32_t i = 0; i < N->n_fresh; i++) {
@@ -989,18 +1055,7 @@ static wk_status process_group(naive *N, double t) {
             return WK_FAIL(R, WK_EALGO, N->P->name, 0,
                            "naive: antiparallel wavefront vertex at t = %.17g", t);
     }
-    if (check_cycles_sane(N) != WK_OK) {
-#ifdef NAIVE_DEBUG
-        fprintf(stderr, "group t=%.17g seeds %u clusters %u subs %u pairs %u pins %u\n", t, N->n_seeds, N->n_cl, N->n_sub, N->n_pair, N->n_pin);
-        for (uint32_t i = 0; i < N->n_seeds; i++) { nv_vertex *u = &N->v[N->seeds[i]]; fprintf(stderr, " seed %u kind %d t %.17g p %.17g %.17g a %u b %u reflex %d ein %u eout %u at %u\n", N->seeds[i], u->ev_kind, u->ev_t, u->ev_p.x, u->ev_p.y, u->ev_a, u->ev_b, u->reflex, u->ein, u->eout, u->at); }
-        for (uint32_t k = 0; k < N->n_cl; k++) fprintf(stderr, " cl %u %.17g %.17g\n", k, N->cl[k].p.x, N->cl[k].p.y);
-        for (uint32_t i = 0; i < N->n_sub; i++) fprintf(stderr, " sub %u: %x -> %x e%u dead %d\n", i, N->sub[i].from, N->sub[i].to, N->sub[i].edge, N->sub[i].dead);
-        for (uint32_t i = 0; i < N->n_pair; i++) fprintf(stderr, " pair %u: in %u out %u node %u v %u\n", i, N->pair[i].in, N->pair[i].out, N->pair[i].node, N->pair[i].vertex);
-        for (uint32_t i = 0; i < N->n_comp; i++) { nv_vertex *u = &N->v[N->comp[i]]; if (u->at != WK_NONE) fprintf(stderr, " comp %u at %u\n", N->comp[i], u->at);}
-        fprintf(stderr, " comp size %u\n", N->n_comp);
-#endif
-        return R->err.code;
-    }
+    if (check_cycles_sane(N) != WK_OK) return R->err.code;
     return refresh(N);
 }
 
@@ -1010,7 +1065,8 @@ static wk_status simulate(naive *N) {
     uint32_t n = P->n;
     /* the initial wavefront: one vertex per input vertex */
     for (uint32_t i = 0; i < n; i++) {
-        uint32_t id = new_vertex(N, (i + n - 1) % n, i, P->p[i], 0.0, i);
+        wk_point q = {P->p[i].x - N->origin.x, P->p[i].y - N->origin.y};
+        uint32_t id = new_vertex(N, (i + n - 1) % n, i, q, 0.0, i);
         if (id == WK_NONE) return R->err.code;
     }
     for (uint32_t i = 0; i < n; i++) link(N, i, (i + 1) % n);
@@ -1045,15 +1101,6 @@ static wk_status simulate(naive *N) {
             if (push_u32(R, &N->seeds, &N->n_seeds, &N->cap_seeds, id) != WK_OK)
                 return R->err.code;
         }
-#ifdef NAIVE_DEBUG
-        if (same_time > 3 && same_time < 8) {
-            fprintf(stderr, "group t=%.17g seeds %u\n", t, N->n_seeds);
-            for (uint32_t i = 0; i < N->n_seeds; i++) { nv_vertex *u = &N->v[N->seeds[i]]; wk_point q = pos_at(u, t);
-                { nv_vertex *A = &N->v[u->ev_a], *B = &N->v[u->ev_b]; const wk_offset_line *L = &N->L[A->eout]; wk_point pa = pos_at(A, t), pb = pos_at(B, t);
-                  double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy, s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy, off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
-                  fprintf(stderr, "  target len %.3g s %.3g off %.3g eps %.3g A.t0 %.17g B.t0 %.17g A.vel %g %g A.reflex %d aein %u aeout %u\n", len, s, off, N->eps_d, A->t0, B->t0, A->vel.x, A->vel.y, A->reflex, A->ein, A->eout); } fprintf(stderr, " seed %u kind %d t0 %.17g p %.17g %.17g pos %.17g %.17g a %u b %u reflex %d vk %d ein %u eout %u prev %u next %u vel %g %g\n", N->seeds[i], u->ev_kind, u->t0, u->ev_p.x, u->ev_p.y, q.x, q.y, u->ev_a, u->ev_b, u->reflex, u->vkind, u->ein, u->eout, u->prev, u->next, u->vel.x, u->vel.y); }
-        }
-#endif
         if (process_group(N, t) != WK_OK) return R->err.code;
     }
     for (uint32_t i = 0; i < N->nv; i++)
@@ -1072,14 +1119,23 @@ static wk_status naive_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
     double wmax = 0;
     for (uint32_t i = 0; i < P->n; i++) wmax = P->w[i] > wmax ? P->w[i] : wmax;
     N.eps_d = WK_TOL_REL * wk_polygon_scale(P);
-    N.eps_t = N.eps_d / wmax;
+    /* Simultaneous means equal up to the rounding of a constructed time
+    ** (~1e-15 relative); a looser window would merge events that happen in
+    ** sequence, and fast vertices move far in between (a vertex of speed s
+    ** covers s * eps_t). */
+    N.eps_t = 1e-3 * N.eps_d / wmax;
     wk_status st = WK_OK;
     N.L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
     if (!N.L) {
         st = R->err.code;
         goto done;
     }
-    for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge(P, i, &N.L[i]);
+    N.origin = wk_polygon_centre(P);
+    for (uint32_t i = 0; i < P->n; i++) {
+        const wk_point *a = &P->p[i], *b = &P->p[(i + 1) % P->n];
+        wk_offset_line_of_points((wk_point){a->x - N.origin.x, a->y - N.origin.y},
+                                 (wk_point){b->x - N.origin.x, b->y - N.origin.y}, P->w[i], &N.L[i]);
+    }
     if ((st = wk_skeleton_new(R, P, &N.S)) != WK_OK) goto done;
     st = simulate(&N);
     if (st == WK_OK) st = wk_skeleton_merge_pass_through(R, N.S);
@@ -1097,6 +1153,8 @@ done:
     WK_FREE_ARRAY(R, N.slot, N.cap_slot);
     WK_FREE_ARRAY(R, N.fresh, N.cap_fresh);
     WK_FREE_ARRAY(R, N.cycflag, N.cap_cycflag);
+    WK_FREE_ARRAY(R, N.run, N.cap_run);
+    WK_FREE_ARRAY(R, N.run_node, N.cap_run_node);
     if (st != WK_OK) {
         wk_skeleton_free(R, N.S);
         return st;

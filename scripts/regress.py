@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""regress.py: compare a wskel-bench run with the committed baseline.
+
+usage: regress.py RUN.csv BASELINE.csv [--time-tol 1.5] [--min-time 0.005] [--all]
+
+Per configuration (variant family n r_req k weights seed; repeats grouped):
+  - status, r, nodes, arcs and every counter must be equal: they are
+    deterministic (counts only, ties broken by ids), so any difference means
+    the algorithm now does different work;
+  - peak tracked bytes within 1% (deterministic too, except for allocator
+    growth policies that depend on nothing but the input; 1% leaves room for
+    an incidental change of a struct's padding, not for a new array);
+  - time, as a ratio to the reference polygon measured in the same run
+    (REFERENCE below, the median of its repeats): the run's ratio may exceed
+    the baseline's by at most --time-tol.
+Why a ratio and why 1.5: absolute times move with the machine, its clock
+frequency and its neighbours (the baseline comes from a shared 2-core VM);
+dividing by a reference run measured minutes apart in the same process tree
+cancels most of that.  What is left is cache and scheduler noise: on that
+machine, back-to-back runs of the same binary (median of 5 repeats) stayed
+within x1.2 of each other in the two checks made so far (a small sample:
+re-measure the spread when the baseline is next regenerated), so 1.5x stays
+clear of noise while still catching the regressions that matter (an
+accidental extra O(n) scan per event costs far more than 50% at n = 3000).  Runs under --min-time seconds are not
+timed for the check: at that scale timer and scheduling jitter dominate.
+Prints a table (only the interesting lines unless --all) and exits 1 on any
+regression, 2 on a usage error or a missing reference.
+"""
+import argparse
+import os
+import statistics
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fit  # noqa: E402
+
+REFERENCE = {"variant": "naive", "family": "star", "n": 3000, "weights": "unit", "seed": 1,
+             "r_req": -1}
+TRACKED_TOL = 0.01
+
+
+def group(rows):
+    out = {}
+    for r in rows:
+        key = (r["variant"], r["family"], r["n"], r["r_req"], r["k"], r["weights"], r["seed"])
+        out.setdefault(key, []).append(r)
+    return out
+
+
+def reference_time(rows):
+    ts = [r["wall_s"] for r in rows if all(r[k] == v for k, v in REFERENCE.items())
+          and r["status"] == "ok" and r["wall_s"]]
+    k1 = [r for r in rows if all(r[k] == v for k, v in REFERENCE.items())]
+    if not ts:
+        return None, k1
+    return statistics.median(ts), k1
+
+
+def fmt_key(key):
+    v, fam, n, rr, k, w, s = key
+    return "%s %s n=%d%s%s %s s%s" % (v, fam, n, "" if rr == -1 else " r=%d" % rr,
+                                      "" if k == "" else " k=" + k, w, s)
+
+
+def main():
+    ap = argparse.ArgumentParser(description="compare a run with the baseline")
+    ap.add_argument("run")
+    ap.add_argument("baseline")
+    ap.add_argument("--time-tol", type=float, default=1.5)
+    ap.add_argument("--min-time", type=float, default=0.005)
+    ap.add_argument("--all", action="store_true", help="print every configuration")
+    args = ap.parse_args()
+    counters = fit.counter_columns(args.baseline)
+    if counters != fit.counter_columns(args.run):
+        print("regress: the counter columns differ between run and baseline "
+              "(regenerate the baseline when counters change)")
+        return 1
+    _, run_rows = fit.load_csv(args.run)
+    _, base_rows = fit.load_csv(args.baseline)
+    run_ref, _ = reference_time(run_rows)
+    base_ref, _ = reference_time(base_rows)
+    if not run_ref or not base_ref:
+        print("regress: reference %s missing or not ok in %s" % (
+            REFERENCE, "the run" if not run_ref else "the baseline"))
+        return 2
+    run_g, base_g = group(run_rows), group(base_rows)
+    failures, lines = 0, []
+    hdr = "%-46s %-8s %-10s %9s %9s %7s  %s" % ("configuration", "counters", "tracked",
+                                              "base/ref", "run/ref", "change", "verdict")
+    for key in sorted(base_g, key=lambda k: tuple(str(x) for x in k)):
+        b = base_g[key]
+        r = run_g.get(key)
+        if not r:
+            lines.append("%-46s %s" % (fmt_key(key), "MISSING from the run  REGRESSION"))
+            failures += 1
+            continue
+        problems = []
+        b0, r0 = b[0], r[0]
+        det = ["status", "r", "nodes", "arcs"] + counters
+        diffs = [c for c in det if b0[c] != r0[c]]
+        diffs += [c for c in det for x in r[1:] if x[c] != r0[c] and c not in diffs]
+        cnt = "ok" if not diffs else "DIFF"
+        if diffs:
+            problems.append("differs: " + ", ".join("%s %s->%s" % (c, b0[c], r0[c])
+                                                    for c in diffs[:4]))
+        tracked = "-"
+        if b0["peak_tracked_bytes"] is not None and r0["peak_tracked_bytes"] is not None:
+            rel = (r0["peak_tracked_bytes"] - b0["peak_tracked_bytes"]) / max(
+                b0["peak_tracked_bytes"], 1)
+            tracked = "%+.2f%%" % (100 * rel)
+            if abs(rel) > TRACKED_TOL:
+                problems.append("peak tracked bytes %+.1f%% (tolerance 1%%)" % (100 * rel))
+        bt = [x["wall_s"] for x in b if x["status"] == "ok" and x["wall_s"]]
+        rt = [x["wall_s"] for x in r if x["status"] == "ok" and x["wall_s"]]
+        bq = rq = ch = None
+        if bt and rt:
+            bq = statistics.median(bt) / base_ref
+            rq = statistics.median(rt) / run_ref
+            ch = rq / bq
+            if statistics.median(bt) >= args.min_time and ch > args.time_tol:
+                problems.append("time ratio x%.2f (tolerance x%.2f)" % (ch, args.time_tol))
+        verdict = "REGRESSION: " + "; ".join(problems) if problems else "ok"
+        if ch is not None and ch < 1 / args.time_tol and not problems and \
+                statistics.median(bt) >= args.min_time:
+            verdict = "ok (faster)"
+        failures += bool(problems)
+        line = "%-46s %-8s %-10s %9s %9s %7s  %s" % (
+            fmt_key(key), cnt, tracked, "%.3g" % bq if bq else "-", "%.3g" % rq if rq else "-",
+            "x%.2f" % ch if ch else "-", verdict)
+        if args.all or verdict != "ok":
+            lines.append(line)
+    extra = [k for k in run_g if k not in base_g]
+    print("reference: %s: baseline %.4gs, this run %.4gs (machine speed ratio %.2f)" % (
+        fmt_key((REFERENCE["variant"], REFERENCE["family"], REFERENCE["n"], -1, "",
+                 REFERENCE["weights"], REFERENCE["seed"])), base_ref, run_ref, run_ref / base_ref))
+    print(hdr)
+    for line in lines:
+        print(line)
+    if extra:
+        print("%d configurations are not in the baseline (ignored), e.g. %s" % (
+            len(extra), fmt_key(extra[0])))
+    print("regress: %d configurations compared, %d regressions" % (len(base_g), failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

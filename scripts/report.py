@@ -1,0 +1,91 @@
+#!/usr/bin/python3
+"""report.py: REPORT.md for a wskel-bench run: machine, statuses, fit, plots.
+
+usage: report.py RESULTS.csv PLOTDIR OUT.md [--fit FIT.txt]
+The plots are linked relative to OUT.md's folder; only those present are
+embedded (plot.py skips figures whose data are absent).
+"""
+import argparse
+import os
+import sys
+from collections import Counter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fit  # noqa: E402
+
+FIGURES = [
+    ("time_vs_n", "Construction time against n (log-log; slope in the legend, dashed: NNLS model)"),
+    ("memory_vs_n", "Peak tracked bytes and peak RSS against n"),
+    ("k_effect", "Time and peak memory against k at fixed n and r"),
+    ("k_tradeoff", "Time against peak memory, points labelled by k"),
+    ("events_vs_bounds", "Event counts against their bounds (switch: n r, start: r^2)"),
+]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("csv")
+    ap.add_argument("plotdir")
+    ap.add_argument("out")
+    ap.add_argument("--fit", help="fit.py output to embed (recomputed if absent)")
+    args = ap.parse_args()
+    comments, rows = fit.load_csv(args.csv)
+    outdir = os.path.dirname(os.path.abspath(args.out))
+    lines = ["# wskel benchmark report", ""]
+    lines.append("Source: `%s`, %d runs." % (os.path.relpath(args.csv, outdir), len(rows)))
+    lines.append("")
+    lines.append("## Machine and build")
+    lines.append("")
+    for c in comments:
+        if c.split(":")[0] in ("date", "cpu", "cores", "memory", "compiler", "cflags", "git",
+                               "generator version", "command", "limits"):
+            lines.append("- " + c)
+    lines.append("")
+    lines.append("## Statuses")
+    lines.append("")
+    counts = Counter((r["variant"], r["status"]) for r in rows)
+    lines.append("| variant | status | runs |")
+    lines.append("|---|---|---|")
+    for (v, s), c in sorted(counts.items()):
+        lines.append("| %s | %s | %d |" % (v, s, c))
+    bad = [r for r in rows if r["status"] != "ok"]
+    if bad:
+        lines.append("")
+        lines.append("Runs that did not finish ok (first 20):")
+        lines.append("")
+        for r in bad[:20]:
+            lines.append("- %s %s n=%d seed=%s %s: %s %s" % (r["variant"], r["family"], r["n"],
+                         r["seed"], r["weights"], r["status"], r["message"]))
+    lines.append("")
+    lines.append("## Model fit")
+    lines.append("")
+    if args.fit and os.path.exists(args.fit):
+        text = open(args.fit).read()
+    else:
+        text = fit.format_fits(fit.fit_groups(rows))
+    lines.append("```")
+    lines.append(text.rstrip())
+    lines.append("```")
+    lines.append("")
+    lines.append("Shares are each term's part of the predicted time at the group's largest n. "
+                 "The naive reference variant has no arrangement, so its r^3/k term only says "
+                 "that its time grows like a power of r between 2 and 3 on these families.")
+    lines.append("")
+    lines.append("## Figures")
+    lines.append("")
+    for name, caption in FIGURES:
+        png = os.path.join(args.plotdir, name + ".png")
+        if os.path.exists(png):
+            rel = os.path.relpath(png, outdir)
+            lines.append("### " + caption)
+            lines.append("")
+            lines.append("![%s](%s) ([SVG](%s))" % (name, rel, rel[:-4] + ".svg"))
+            lines.append("")
+    with open(args.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote", args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,171 @@
+#!/bin/bash
+# test_bench.sh: the benchmark harness's own tests (bin/wskel-bench and the
+# scripts).  Run from the repository root after `make`:  bash tests/test_bench.sh
+#   1. a crashing, a hanging and an out-of-memory child (--self-test, applied
+#      to one configuration) and a rejected input each get their status, and
+#      the other configurations of the sweep still run;
+#   2. --resume after an interrupted sweep (a truncated CSV with a partial last
+#      line, and a parent killed mid-sweep) gives the same rows as an
+#      uninterrupted sweep (configuration, status and counter columns);
+#   3. shards 0/3, 1/3, 2/3 cover every configuration exactly once, and
+#      merge_shards.py puts them back together;
+#   4. regress.py passes on an honest baseline and fails on doctored ones.
+set -u
+PY=/usr/bin/python3
+BENCH=bin/wskel-bench
+T=$(mktemp -d "${TMPDIR:-/tmp}/wskel-test-bench.XXXXXX")
+trap 'rm -rf "$T"' EXIT
+fails=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+check() { if eval "$2"; then pass "$1"; else fail "$1"; fi; }
+
+# status of the row for seed S (column 7) in CSV
+status_of() { grep -v '^#' "$1" | awk -F, -v s="$2" 'NR > 1 && $7 == s { print $10 }'; }
+# configuration, r, status, nodes, arcs, crossings, validated and counters:
+# everything but times and memory, which differ between runs
+stable_cols() {
+    $PY - "$1" <<'EOF'
+import sys
+sys.path.insert(0, "scripts")
+import fit
+_, rows = fit.load_csv(sys.argv[1])
+skip = {"wall_s", "cpu_s", "peak_rss_bytes", "message"}
+for r in rows:
+    print(",".join(str(v) for k, v in r.items() if k not in skip))
+EOF
+}
+
+[ -x "$BENCH" ] || { echo "test_bench.sh: $BENCH missing (run make)"; exit 1; }
+
+# ---- 1. failure statuses; the sweep continues
+base=(--family star --n 100 --seeds 1..3 --quiet --validate)
+$BENCH "${base[@]}" --self-test crash:1 --out "$T/crash.csv"
+check "crash: status crash, signal 11" \
+    '[ "$(status_of $T/crash.csv 2)" = crash ] && grep -q "^naive,star,100,-1,,unit,2,0,[0-9]*,crash,11," $T/crash.csv'
+check "crash: the sweep continues" \
+    '[ "$(status_of $T/crash.csv 1)" = ok ] && [ "$(status_of $T/crash.csv 3)" = ok ]'
+start=$(date +%s)
+$BENCH "${base[@]}" --self-test hang:1 --time-limit 1 --out "$T/hang.csv"
+check "hang: status timeout within the limit" \
+    '[ "$(status_of $T/hang.csv 2)" = timeout ] && [ $(( $(date +%s) - start )) -lt 10 ]'
+check "hang: the sweep continues" \
+    '[ "$(status_of $T/hang.csv 1)" = ok ] && [ "$(status_of $T/hang.csv 3)" = ok ]'
+$BENCH "${base[@]}" --self-test oom:1 --mem-limit 200 --out "$T/oom.csv"
+check "oom: status out-of-memory" '[ "$(status_of $T/oom.csv 2)" = out-of-memory ]'
+check "oom: the sweep continues" \
+    '[ "$(status_of $T/oom.csv 1)" = ok ] && [ "$(status_of $T/oom.csv 3)" = ok ]'
+$BENCH --family notched --n 100 --r 90,10 --quiet --out "$T/rej.csv"
+check "rejected: impossible generator parameters" \
+    'grep -q "^naive,notched,100,90,,unit,1,0,0,rejected,.*r=90 > n/2=50" $T/rej.csv'
+check "rejected: the sweep continues" 'grep -q "^naive,notched,100,10,,unit,1,0,10,ok," $T/rej.csv'
+check "jsonl twin has every row" \
+    '[ $(wc -l < $T/crash.jsonl) = 3 ] && grep -q "\"status\":\"crash\",\"signal\":11" $T/crash.jsonl'
+
+# ---- 2. resume
+sweep=(--family star,comb,spiral --n 100,300 --seeds 1,2 --weights unit,uniform --quiet --validate)
+$BENCH "${sweep[@]}" --out "$T/full.csv"
+stable_cols "$T/full.csv" > "$T/full.stable"
+check "full sweep has 24 rows" '[ $(wc -l < $T/full.stable) = 24 ]'
+# interrupted: keep the header and 7 rows, plus half of the 8th row
+$BENCH "${sweep[@]}" --out "$T/cut.csv"
+n_hdr=$(grep -c '^#' "$T/cut.csv")
+head -n $((n_hdr + 1 + 7)) "$T/cut.csv" > "$T/cut2.csv"
+sed -n "$((n_hdr + 9))p" "$T/cut.csv" | head -c 30 >> "$T/cut2.csv"
+mv "$T/cut2.csv" "$T/cut.csv"
+$BENCH "${sweep[@]}" --resume --out "$T/cut.csv"
+stable_cols "$T/cut.csv" > "$T/cut.stable"
+check "resume after truncation: same rows" 'cmp -s $T/full.stable $T/cut.stable'
+# a parent killed mid-sweep
+$BENCH "${sweep[@]}" --n 100,300,3000 --out "$T/kill.csv" &
+pid=$!
+sleep 0.4
+kill -9 $pid 2>/dev/null
+wait $pid 2>/dev/null
+$BENCH "${sweep[@]}" --n 100,300,3000 --resume --out "$T/kill.csv"
+$BENCH "${sweep[@]}" --n 100,300,3000 --out "$T/kill_ref.csv"
+check "resume after kill -9: same rows (and the kill did interrupt)" \
+    'grep -q "^# resumed [1-9]" $T/kill.csv && cmp -s <(stable_cols $T/kill.csv) <(stable_cols $T/kill_ref.csv)'
+check "resume of a finished sweep runs nothing" \
+    '$BENCH "${sweep[@]}" --resume --dry-run --out $T/full.csv | wc -l | grep -qx 0'
+
+# ---- 3. shards
+$BENCH "${sweep[@]}" --dry-run > "$T/all.list"
+for i in 0 1 2; do $BENCH "${sweep[@]}" --shard $i/3 --dry-run; done | sort -n > "$T/shards.list"
+check "shards 0/3 1/3 2/3 cover every configuration exactly once" \
+    'cmp -s <(sort -n $T/all.list) $T/shards.list'
+for i in 0 1 2; do $BENCH "${sweep[@]}" --shard $i/3 --out "$T/shard$i.csv"; done
+spec="$T/sweep.spec"
+printf 'family = star,comb,spiral\nn = 100,300\nseeds = 1,2\nweights = unit,uniform\nvalidate\n' > "$spec"
+$PY scripts/merge_shards.py "$T/merged.csv" "$T"/shard{0,1,2}.csv --spec "$spec" --bench $BENCH > /dev/null
+check "merge_shards gives the uninterrupted sweep" \
+    'cmp -s <(stable_cols $T/merged.csv) $T/full.stable && [ $(wc -l < $T/merged.jsonl) = 24 ]'
+
+# ---- 4. regress
+rsweep=(--family star,comb --n 300,3000 --repeats 3 --quiet)
+$BENCH "${rsweep[@]}" --out "$T/base.csv"
+$BENCH "${rsweep[@]}" --out "$T/run.csv"
+check "regress passes on an honest baseline" \
+    '$PY scripts/regress.py $T/run.csv $T/base.csv --time-tol 3 > $T/r1.txt'
+# doctor one counter (queue_pops of the first naive row) in the baseline
+$PY - "$T/base.csv" "$T/doc1.csv" <<'EOF'
+import sys
+lines = open(sys.argv[1]).read().splitlines(True)
+hdr = [l for l in lines if not l.startswith("#")][0].rstrip("\n").split(",")
+i = hdr.index("queue_pops")
+out, seen = [], False
+for l in lines:
+    if not l.startswith("#") and l.startswith("naive,") and not seen:
+        f = l.split(",")
+        f[i] = str(int(f[i]) + 1)
+        l, seen = ",".join(f), True
+    out.append(l)
+open(sys.argv[2], "w").writelines(out)
+EOF
+check "regress fails on a doctored counter" \
+    '! $PY scripts/regress.py $T/run.csv $T/doc1.csv --time-tol 3 > $T/r2.txt && grep -q "REGRESSION" $T/r2.txt'
+$PY - "$T/base.csv" "$T/doc2.csv" <<'EOF'
+import sys
+lines = open(sys.argv[1]).read().splitlines(True)
+hdr = [l for l in lines if not l.startswith("#")][0].rstrip("\n").split(",")
+i = hdr.index("peak_tracked_bytes")
+out, seen = [], False
+for l in lines:
+    if not l.startswith("#") and l.startswith("naive,") and not seen:
+        f = l.split(",")
+        f[i] = str(int(int(f[i]) / 1.05))   # the run now uses 5% more
+        l, seen = ",".join(f), True
+    out.append(l)
+open(sys.argv[2], "w").writelines(out)
+EOF
+check "regress fails on peak tracked bytes +5%" \
+    '! $PY scripts/regress.py $T/run.csv $T/doc2.csv --time-tol 3 > $T/r3.txt && grep -q "peak tracked" $T/r3.txt'
+# doctored time: the baseline claims everything but the reference was 3x faster
+$PY - "$T/base.csv" "$T/doc3.csv" <<'EOF'
+import sys
+lines = open(sys.argv[1]).read().splitlines(True)
+hdr = [l for l in lines if not l.startswith("#")][0].rstrip("\n").split(",")
+i = hdr.index("wall_s")
+out = []
+for l in lines:
+    if not l.startswith("#") and l.startswith("naive,comb,3000,"):
+        f = l.split(",")
+        f[i] = repr(float(f[i]) / 3)
+        l = ",".join(f)
+    out.append(l)
+open(sys.argv[2], "w").writelines(out)
+EOF
+check "regress fails on a 3x slower configuration" \
+    '! $PY scripts/regress.py $T/run.csv $T/doc3.csv > $T/r4.txt && grep -q "time ratio" $T/r4.txt'
+
+# ---- usage errors
+check "unknown variant is a usage error (64)" \
+    '$BENCH --family star --n 10 --variant nope --out $T/x.csv 2>/dev/null; [ $? = 64 ]'
+check "bad shard is a usage error (64)" \
+    '$BENCH --family star --n 10 --shard 3/3 --out $T/x.csv 2>/dev/null; [ $? = 64 ]'
+
+if [ $fails -ne 0 ]; then
+    echo "test_bench.sh: $fails failure(s)"
+    exit 1
+fi
+echo "test_bench.sh: all passed"

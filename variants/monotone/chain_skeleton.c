@@ -1,0 +1,391 @@
+/*
+** chain_skeleton.c: the weighted skeleton of one monotone chain extended by
+** rays (001 section 2).
+**
+** Model.  The wavefront of a chain is a path of vertices (prev/next ids,
+** WK_NONE beyond the two rays); vertex v sits between chain edges ein and
+** eout and moves linearly from its start node, exactly as in the naive
+** variant (same offset lines, same velocities, same snapping of new
+** vertices onto both offset lines).  001 Lemma 1: the wavefront of a
+** monotone chain stays monotone, so every change is an edge collapse: the
+** only candidate event of v is the collapse of its outgoing piece v -> next,
+** kept in an indexed heap (engine/event_queue.h) under v's id; an event
+** touches two neighbours only, so the simulation is O(m log m).
+**
+** Resolution of one collapse at node N (time t), in this order, until a
+** vertex with a proper velocity is born:
+**   1. absorb: a neighbour within tolerance of N arrives there too (several
+**      pieces vanishing at one point, 001's "vertex events");
+**   2. regular or straight (parallel, equal weights): the new vertex;
+**   3. collinear (parallel, different weights): the engine's rule
+**      (R->opt.collinear): the losing edge's piece is swept at once, leaving
+**      a flat trace along it; its far vertex arrives at its far end, which
+**      becomes the new N;
+**   4. antiparallel (only in a non-strictly monotone chain: two walls
+**      perpendicular to the sweep facing each other): the two pieces lie on
+**      one line and cancel where they overlap, leaving a flat trace from N to
+**      the nearer far end, where that far vertex (both, if equally far)
+**      arrives; that point becomes the new N.
+** A losing piece or an antiparallel pair that is a ray has no far end: the
+** flat trace is infinite and the winner becomes the chain's end ray.
+**
+** Tolerances as in wskel.h: a vertex arrives at N when it is within eps_d
+** plus its speed times eps_t.
+*/
+#include "monotone_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+typedef struct sim {
+    mono *M;
+    mono_chain *C;
+    wk_event_queue Q;
+    double t_now;
+} sim;
+
+uint32_t wk_mono_chain_local(const mono *M, const mono_chain *C, uint32_t e) {
+    uint32_t n = M->P->n, k = (e + n - C->first) % n;
+    return k < C->m ? k : WK_NONE;
+}
+
+wk_point wk_mono_trace_at(const mono_trace *v, double t) {
+    if (v->flat) return v->p0;
+    if (t > v->t1) t = v->t1;
+    double dt = t - v->t0;
+    return (wk_point){v->p0.x + v->vel.x * dt, v->p0.y + v->vel.y * dt};
+}
+
+static double dist2(wk_point a, wk_point b) {
+    double dx = a.x - b.x, dy = a.y - b.y;
+    return dx * dx + dy * dy;
+}
+
+void wk_mono_chain_clear(wk_run *R, mono_chain *C) {
+    WK_FREE_ARRAY(R, C->v, C->cap_v);
+    WK_FREE_ARRAY(R, C->node, C->cap_n);
+    WK_FREE_ARRAY(R, C->lw_start, C->m + 1);
+    WK_FREE_ARRAY(R, C->rw_start, C->m + 1);
+    WK_FREE_ARRAY(R, C->lw, C->n_lw);
+    WK_FREE_ARRAY(R, C->rw, C->n_rw);
+    C->nv = C->cap_v = C->nn = C->cap_n = C->n_lw = C->n_rw = 0;
+}
+
+static uint32_t new_node(sim *S, wk_point p, double t, uint32_t input) {
+    mono_chain *C = S->C;
+    if (WK_GROW(S->M->R, C->node, C->cap_n, C->nn + 1) != WK_OK) return WK_NONE;
+    C->node[C->nn] = (mono_node){p, t, input};
+    return C->nn++;
+}
+
+/* A new trace starting at node `node` (point p, time t).  Snaps the start
+** onto both offset lines when that is well conditioned (as naive does), so
+** later events depend on the input lines rather than on this one's
+** rounding. */
+static uint32_t new_trace(sim *S, uint32_t ein, uint32_t eout, wk_point p, double t,
+                          uint32_t node) {
+    mono_chain *C = S->C;
+    const wk_offset_line *L = S->M->L;
+    if (WK_GROW(S->M->R, C->v, C->cap_v, C->nv + 1) != WK_OK) return WK_NONE;
+    if (C->nv + 1 > S->Q.cap &&
+        wk_event_queue_reserve(S->M->R, &S->Q, 2 * S->Q.cap + 16) != WK_OK)
+        return WK_NONE;
+    uint32_t id = C->nv++;
+    mono_trace *x = &C->v[id];
+    memset(x, 0, sizeof *x);
+    x->ein = ein;
+    x->eout = eout;
+    x->p0 = p;
+    x->t0 = t;
+    x->t1 = INFINITY;
+    x->start = node;
+    x->end = WK_NONE;
+    x->prev = x->next = WK_NONE;
+    x->alive = 1;
+    x->ev_t = INFINITY;
+    x->kind = (uint8_t)wk_vertex_velocity(&L[ein], &L[eout], &x->vel);
+    x->reflex = x->kind == WK_VEL_REGULAR && wk_is_reflex_turn(&L[ein], &L[eout]);
+    wk_point q;
+    if (x->kind == WK_VEL_REGULAR && t > 0 && wk_offset_lines_meet(&L[ein], &L[eout], t, &q) &&
+        dist2(q, p) <= S->M->eps_d * S->M->eps_d)
+        x->p0 = q;
+    return id;
+}
+
+/* A flat trace (an arc swept at one instant) from node a along unit vector
+** u to node b (WK_NONE: infinite). */
+static uint32_t new_flat(sim *S, uint32_t ein, uint32_t eout, uint32_t a, uint32_t b, wk_point u,
+                         double t) {
+    uint32_t id = new_trace(S, ein, eout, S->C->node[a].p, t, a);
+    if (id == WK_NONE) return WK_NONE;
+    mono_trace *x = &S->C->v[id];
+    x->flat = 1;
+    x->vel = u;
+    x->alive = 0;
+    x->t1 = t;
+    x->end = b;
+    return id;
+}
+
+static void terminate(sim *S, uint32_t x, uint32_t node) {
+    mono_trace *v = &S->C->v[x];
+    v->alive = 0;
+    v->end = node;
+    v->t1 = S->C->node[node].t;
+    if (v->t1 < v->t0) v->t1 = v->t0;
+    wk_event_queue_remove(S->M->R, &S->Q, x);
+}
+
+/* Replace a kinematic estimate by the meeting point of three offset lines
+** when that system is well conditioned and agrees (as naive's refine). */
+static void refine(const sim *S, const mono_trace *V, uint32_t e1, uint32_t e2, uint32_t e3,
+                   double *t, wk_point *p) {
+    const mono *M = S->M;
+    if (e1 == e2 || e2 == e3 || e1 == e3 || V->kind != WK_VEL_REGULAR) return;
+    wk_point q;
+    double tq;
+    if (!wk_three_lines_meet(&M->L[e1], &M->L[e2], &M->L[e3], &q, &tq)) return;
+    double speed = fabs(V->vel.x) + fabs(V->vel.y);
+    if (fabs(tq - *t) > 16 * M->eps_t ||
+        dist2(q, *p) > 256 * M->eps_d * M->eps_d * (1 + speed * speed))
+        return;
+    if (tq < S->t_now) tq = S->t_now;
+    *t = tq;
+    *p = q;
+}
+
+/* Candidate collapse of the piece a -> a.next and its queue entry. */
+static wk_status schedule(sim *S, uint32_t a) {
+    mono_trace *A = &S->C->v[a];
+    A->ev_t = INFINITY;
+    if (!A->alive || A->next == WK_NONE) {
+        wk_event_queue_remove(S->M->R, &S->Q, a);
+        return WK_OK;
+    }
+    const mono_trace *B = &S->C->v[A->next];
+    const wk_offset_line *L = &S->M->L[A->eout];
+    double t0 = S->t_now;
+    wk_point pa = wk_mono_trace_at(A, t0), pb = wk_mono_trace_at(B, t0);
+    double d = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
+    double rate = (B->vel.x - A->vel.x) * L->ux + (B->vel.y - A->vel.y) * L->uy;
+    double t;
+    if (d <= S->M->eps_d && rate <= 0) t = t0;
+    else if (rate < 0) t = t0 + (d > 0 ? d : 0) / -rate;
+    else {
+        wk_event_queue_remove(S->M->R, &S->Q, a);
+        return WK_OK;
+    }
+    if (!isfinite(t)) {
+        wk_event_queue_remove(S->M->R, &S->Q, a);
+        return WK_OK;
+    }
+    wk_point qa = wk_mono_trace_at(A, t), qb = wk_mono_trace_at(B, t);
+    wk_point p = {0.5 * (qa.x + qb.x), 0.5 * (qa.y + qb.y)};
+    if (B->kind == WK_VEL_REGULAR) refine(S, A, A->ein, A->eout, B->eout, &t, &p);
+    A->ev_t = t;
+    A->ev_p = p;
+    return wk_event_queue_set(S->M->R, &S->Q, a, (wk_event_key){t, 0});
+}
+
+static bool arrives(const sim *S, uint32_t x, wk_point at, double t) {
+    const mono_trace *v = &S->C->v[x];
+    double speed = fabs(v->vel.x) + fabs(v->vel.y);
+    double r = S->M->eps_d + speed * S->M->eps_t;
+    return dist2(wk_mono_trace_at(v, t), at) <= r * r;
+}
+
+static void link(sim *S, uint32_t a, uint32_t b) {
+    if (a != WK_NONE) S->C->v[a].next = b;
+    if (b != WK_NONE) S->C->v[b].prev = a;
+}
+
+/* Resolve the wavefront at node `node` (time t) where the vertices between P
+** and Q have arrived: the new vertex would sit between edges ein (P's
+** outgoing edge) and eout (Q's incoming edge).  See the top comment. */
+static wk_status resolve(sim *S, uint32_t node, uint32_t P, uint32_t Q, uint32_t ein,
+                         uint32_t eout, double t) {
+    mono *M = S->M;
+    wk_run *R = M->R;
+    mono_chain *C = S->C;
+    for (uint32_t guard = 0; guard <= 2 * C->m + 8; guard++) {
+        wk_point at = C->node[node].p;
+        while (P != WK_NONE && arrives(S, P, at, t)) {
+            terminate(S, P, node);
+            ein = C->v[P].ein;
+            P = C->v[P].prev;
+        }
+        while (Q != WK_NONE && arrives(S, Q, at, t)) {
+            terminate(S, Q, node);
+            eout = C->v[Q].eout;
+            Q = C->v[Q].next;
+        }
+        wk_point vel;
+        wk_velocity_kind kind = wk_vertex_velocity(&M->L[ein], &M->L[eout], &vel);
+        if (kind == WK_VEL_REGULAR || kind == WK_VEL_STRAIGHT) {
+            uint32_t V = new_trace(S, ein, eout, at, t, node);
+            if (V == WK_NONE) return R->err.code;
+            link(S, P, V);
+            link(S, V, Q);
+            if (schedule(S, V) != WK_OK) return R->err.code;
+            if (P != WK_NONE && schedule(S, P) != WK_OK) return R->err.code;
+            return WK_OK;
+        }
+        /* a flat trace from `node` towards the far end f of the piece that
+        ** goes (side: +1 the outgoing one, towards Q; -1 towards P) */
+        int side;
+        wk_point u;
+        if (kind == WK_VEL_COLLINEAR) {
+            double wi = M->L[ein].w, wo = M->L[eout].w;
+            bool out_loses = R->opt.collinear == WK_COLLINEAR_LOWER ? wo > wi : wo < wi;
+            side = out_loses ? +1 : -1;
+            wk_event e = {t, at.x, at.y, ein, eout, WK_NONE};
+            wk_notify_event(R, WK_EV_COLLINEAR, &e);
+        } else { /* antiparallel: the nearer far end */
+            double dP = P != WK_NONE ? dist2(wk_mono_trace_at(&C->v[P], t), at) : INFINITY;
+            double dQ = Q != WK_NONE ? dist2(wk_mono_trace_at(&C->v[Q], t), at) : INFINITY;
+            if (!isfinite(dP) && !isfinite(dQ))
+                return WK_FAIL(R, WK_EALGO, M->P->name, 0,
+                               "monotone: two antiparallel rays meet in a chain at t = %.17g", t);
+            side = dQ <= dP ? +1 : -1;
+        }
+        u = side > 0 ? (wk_point){M->L[eout].ux, M->L[eout].uy}
+                     : (wk_point){-M->L[ein].ux, -M->L[ein].uy};
+        uint32_t f = side > 0 ? Q : P;
+        if (f == WK_NONE) {
+            /* the piece is a ray: swept entirely; the winner becomes the ray */
+            if (new_flat(S, ein, eout, node, WK_NONE, u, t) == WK_NONE) return R->err.code;
+            if (side > 0) {
+                link(S, P, WK_NONE);
+                if (P != WK_NONE && schedule(S, P) != WK_OK) return R->err.code;
+            } else {
+                link(S, WK_NONE, Q);
+                /* Q's piece is unchanged */
+            }
+            return WK_OK;
+        }
+        wk_point pf = wk_mono_trace_at(&C->v[f], t);
+        uint32_t nf = new_node(S, pf, t, WK_NONE);
+        if (nf == WK_NONE || new_flat(S, ein, eout, node, nf, u, t) == WK_NONE)
+            return R->err.code;
+        node = nf; /* the absorb step at the top lets f (and, if as far, the
+                      other side's far vertex) arrive there */
+        if (kind == WK_VEL_COLLINEAR) {
+            /* only f arrives (the winner's piece goes on) */
+            terminate(S, f, node);
+            if (side > 0) {
+                eout = C->v[f].eout;
+                Q = C->v[f].next;
+            } else {
+                ein = C->v[f].ein;
+                P = C->v[f].prev;
+            }
+        }
+    }
+    return WK_FAIL(R, WK_EALGO, M->P->name, 0,
+                   "monotone: no end to the resolution of a chain event at t = %.17g", t);
+}
+
+static wk_status build_walls(mono *M, mono_chain *C) {
+    wk_run *R = M->R;
+    C->lw_start = WK_NEW_ARRAY(R, uint32_t, C->m + 1);
+    C->rw_start = WK_NEW_ARRAY(R, uint32_t, C->m + 1);
+    C->n_lw = C->n_rw = C->nv ? C->nv : 1;
+    C->lw = WK_NEW_ARRAY(R, uint32_t, C->n_lw);
+    C->rw = WK_NEW_ARRAY(R, uint32_t, C->n_rw);
+    if (!C->lw_start || !C->rw_start || !C->lw || !C->rw) return R->err.code;
+    for (uint32_t i = 0; i < C->nv; i++) {
+        uint32_t ko = wk_mono_chain_local(M, C, C->v[i].eout);
+        uint32_t ki = wk_mono_chain_local(M, C, C->v[i].ein);
+        if (ko == WK_NONE || ki == WK_NONE)
+            return WK_FAIL(R, WK_EALGO, M->P->name, 0, "monotone: trace with a foreign edge");
+        C->lw_start[ko + 1]++;
+        C->rw_start[ki + 1]++;
+    }
+    for (uint32_t k = 0; k < C->m; k++) {
+        C->lw_start[k + 1] += C->lw_start[k];
+        C->rw_start[k + 1] += C->rw_start[k];
+    }
+    /* fill in creation order: use the start arrays as cursors, then shift */
+    for (uint32_t i = 0; i < C->nv; i++) {
+        uint32_t ko = wk_mono_chain_local(M, C, C->v[i].eout);
+        uint32_t ki = wk_mono_chain_local(M, C, C->v[i].ein);
+        C->lw[C->lw_start[ko]++] = i;
+        C->rw[C->rw_start[ki]++] = i;
+    }
+    for (uint32_t k = C->m; k > 0; k--) {
+        C->lw_start[k] = C->lw_start[k - 1];
+        C->rw_start[k] = C->rw_start[k - 1];
+    }
+    C->lw_start[0] = C->rw_start[0] = 0;
+    return WK_OK;
+}
+
+wk_status wk_mono_chain_build(mono *M, uint32_t c) {
+    wk_run *R = M->R;
+    const wk_polygon *P = M->P;
+    uint32_t n = P->n;
+    mono_chain *C = &M->ch[c];
+    sim S;
+    memset(&S, 0, sizeof S);
+    S.M = M;
+    S.C = C;
+    wk_event_queue_init(&S.Q);
+    wk_status st = WK_OK;
+    if (wk_event_queue_reserve(R, &S.Q, 2 * C->m + 16) != WK_OK) {
+        st = R->err.code;
+        goto done;
+    }
+    /* the initial wavefront: one vertex per interior chain vertex */
+    for (uint32_t j = 1; j < C->m; j++) {
+        uint32_t i = (C->first + j) % n;
+        uint32_t node = new_node(&S, P->p[i], 0.0, i);
+        uint32_t id = node == WK_NONE ? WK_NONE : new_trace(&S, (i + n - 1) % n, i, P->p[i], 0.0, node);
+        if (id == WK_NONE) {
+            st = R->err.code;
+            goto done;
+        }
+        if (j > 1) link(&S, id - 1, id);
+    }
+    /* input vertices between parallel edges of different weight: the rule
+    ** applies at t = 0 (an antiparallel input vertex would be a spike, which
+    ** the polygon checks refuse) */
+    uint32_t n0 = C->nv;
+    for (uint32_t i = 0; i < n0; i++) {
+        mono_trace *v = &C->v[i];
+        if (!v->alive || v->kind != WK_VEL_COLLINEAR) continue;
+        uint32_t prev = v->prev, next = v->next, ein = v->ein, eout = v->eout, node = v->start;
+        terminate(&S, i, node);
+        link(&S, prev, WK_NONE);
+        link(&S, WK_NONE, next);
+        if ((st = resolve(&S, node, prev, next, ein, eout, 0.0)) != WK_OK) goto done;
+    }
+    for (uint32_t i = 0; i < C->nv; i++) {
+        if (C->v[i].alive && (st = schedule(&S, i)) != WK_OK) goto done;
+    }
+    while (S.Q.size) {
+        uint32_t a = wk_event_queue_pop(R, &S.Q);
+        mono_trace *A = &C->v[a];
+        if (!A->alive || A->next == WK_NONE) continue; /* defensive: never queued so */
+        double t = A->ev_t < S.t_now ? S.t_now : A->ev_t;
+        S.t_now = t;
+        uint32_t b = A->next;
+        uint32_t node = new_node(&S, A->ev_p, t, WK_NONE);
+        if (node == WK_NONE) {
+            st = R->err.code;
+            goto done;
+        }
+        A = &C->v[a];
+        wk_event e = {t, A->ev_p.x, A->ev_p.y, a, b, c};
+        wk_notify_event(R, WK_EV_EDGE, &e);
+        uint32_t Pv = A->prev, Qv = C->v[b].next, ein = A->ein, eout = C->v[b].eout;
+        terminate(&S, a, node);
+        terminate(&S, b, node);
+        link(&S, Pv, WK_NONE);
+        link(&S, WK_NONE, Qv);
+        if ((st = resolve(&S, node, Pv, Qv, ein, eout, t)) != WK_OK) goto done;
+    }
+    st = build_walls(M, C);
+done:
+    wk_event_queue_clear(R, &S.Q);
+    return st;
+}
