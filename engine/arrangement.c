@@ -109,24 +109,6 @@ wk_status wk_arrangement_segments(wk_run *R, const wk_polygon *P, wk_aseg **out,
 ** undecided pairs go to the exact wk_segments_meet. */
 static const double ORIENT_ERR = (3.0 + 16.0 * (DBL_EPSILON / 2.0)) * (DBL_EPSILON / 2.0);
 
-/* Sign of orient(a, b, c) when the double evaluation is certain, else 2. */
-static inline int orient_sure(wk_point a, wk_point b, wk_point c) {
-    double l = (a.x - c.x) * (b.y - c.y), rr = (a.y - c.y) * (b.x - c.x);
-    double det = l - rr, bound = ORIENT_ERR * (fabs(l) + fabs(rr));
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-    return 2;
-}
-
-static bool proper_cross(wk_point a, wk_point b, wk_point c, wk_point d) {
-    int o1 = orient_sure(a, b, c), o2 = orient_sure(a, b, d);
-    if (o1 != 2 && o2 != 2 && o1 == o2) return false;
-    int o3 = orient_sure(c, d, a), o4 = orient_sure(c, d, b);
-    if (o3 != 2 && o4 != 2 && o3 == o4) return false;
-    if (o1 != 2 && o2 != 2 && o3 != 2 && o4 != 2) return true; /* o1 != o2, o3 != o4 */
-    return wk_segments_meet(a, b, c, d) == WK_SEG_CROSS;
-}
-
 /* A segment of A(P) as the pair loop reads it. */
 typedef struct cseg {
     wk_point a, b;
@@ -226,7 +208,7 @@ static uint64_t count_entry(const wk_seg_grid *G, const cseg *S, uint32_t x) {
         uint32_t j = G->items[y];
         const cseg *Q = &S[j];
         if (Q->xh < P->xl || Q->xl > P->xh || Q->yh < P->yl || Q->yl > P->yh) continue;
-        int o3, o4;
+        int o1, o2, o3, o4;
         double d3 = orient_det(Q->a, Q->b, P->a, &o3), d4 = orient_det(Q->a, Q->b, P->b, &o4);
         if (o3 != 2 && o3 == o4) continue; /* P on one side of Q's line */
         double lam = d3 / (d3 - d4);
@@ -236,13 +218,24 @@ static uint64_t count_entry(const wk_seg_grid *G, const cseg *S, uint32_t x) {
         double ex = Q->b.x - Q->a.x, ey = Q->b.y - Q->a.y;
         double px = p.x - Q->a.x, py = p.y - Q->a.y;
         double h = ex * py - ey * px, g = ex * px + ey * py, ml = m * Q->len;
-        bool mine;
-        if (fabs(h) <= ml && g >= -ml && g <= Q->len * Q->len + ml)
-            mine = (xfirst || p.x >= xa) && (xlast || p.x < xb) && (yfirst || p.y >= ya) &&
-                   (ylast || p.y < yb);
+        if (fabs(h) <= ml && g >= -ml && g <= Q->len * Q->len + ml) {
+            /* canonical cell = p's cell: is it c? */
+            if (!((xfirst || p.x >= xa) && (xlast || p.x < xb) && (yfirst || p.y >= ya) &&
+                  (ylast || p.y < yb)))
+                continue;
+            (void)orient_det(P->a, P->b, Q->a, &o1);
+            (void)orient_det(P->a, P->b, Q->b, &o2);
+            if (o1 != 2 && o1 == o2) continue; /* Q on one side of P's line */
+        } else {
+            (void)orient_det(P->a, P->b, Q->a, &o1);
+            (void)orient_det(P->a, P->b, Q->b, &o2);
+            if (o1 != 2 && o1 == o2) continue;
+            if (canonical_slow(G, i, j, p) != c) continue;
+        }
+        if (o1 != 2 && o2 != 2 && o3 != 2 && o4 != 2)
+            total++; /* all four sure and o1 != o2, o3 != o4: a proper crossing */
         else
-            mine = canonical_slow(G, i, j, p) == c;
-        if (mine && proper_cross(P->a, P->b, Q->a, Q->b)) total++;
+            total += wk_segments_meet(P->a, P->b, Q->a, Q->b) == WK_SEG_CROSS;
     }
     return total;
 }
@@ -416,11 +409,11 @@ static void invalidate_for(wk_run *R, wk_arrangement *A, uint32_t nslot, double 
     }
 }
 
-wk_status wk_arrangement_insert(wk_run *R, wk_arrangement *A, wk_point a, wk_point dir,
-                                double len, uint32_t *id) {
+wk_status wk_arrangement_insert(wk_run *R, wk_arrangement *A, wk_point a, wk_point dir, double len,
+                                uint32_t *id) {
     double norm = hypot(dir.x, dir.y);
-    if (!isfinite(a.x) || !isfinite(a.y) || !isfinite(norm) || !(norm > 0.0) ||
-        !isfinite(len) || !(len >= 0.0))
+    if (!isfinite(a.x) || !isfinite(a.y) || !isfinite(norm) || !(norm > 0.0) || !isfinite(len) ||
+        !(len >= 0.0))
         return WK_FAIL(R, WK_EINPUT, NULL, 0,
                        "arrangement insert: bad segment (start (%g, %g), direction (%g, %g), "
                        "length %g)",
@@ -464,8 +457,7 @@ wk_status wk_arrangement_remove(wk_run *R, wk_arrangement *A, uint32_t id) {
         ** ignored: they may have shrunk since the refill. */
         double s, t;
         if (!wk_arrangement_crossing(S, X, &s, &t)) continue;
-        if (!pos_less(C->from_s, C->from_id, s, id) || pos_less(C->to_s, C->to_id, s, id))
-            continue;
+        if (!pos_less(C->from_s, C->from_id, s, id) || pos_less(C->to_s, C->to_id, s, id)) continue;
         uint32_t k = cache_upper(C, s, id);
         if (k > 0 && C->e[k - 1].s == s && C->e[k - 1].other == id && !C->e[k - 1].dead) {
             C->e[k - 1].dead = 1;
@@ -572,9 +564,8 @@ wk_status wk_arrangement_next_crossings_after(wk_run *R, wk_arrangement *A, uint
     return WK_OK;
 }
 
-wk_status wk_arrangement_next_crossings(wk_run *R, wk_arrangement *A, uint32_t seg,
-                                        double s_from, uint32_t k, wk_crossing *out,
-                                        uint32_t *count) {
+wk_status wk_arrangement_next_crossings(wk_run *R, wk_arrangement *A, uint32_t seg, double s_from,
+                                        uint32_t k, wk_crossing *out, uint32_t *count) {
     return wk_arrangement_next_crossings_after(R, A, seg, s_from, WK_NONE, k, out, count);
 }
 
@@ -604,8 +595,8 @@ static bool cache_lookup(const wk_arrangement *A, const wk_arr_seg *Q, const wk_
     return false;
 }
 
-wk_status wk_arrangement_cache_next_after(wk_run *R, wk_arrangement *A, uint32_t seg,
-                                          double s_from, uint32_t after, wk_crossing *c) {
+wk_status wk_arrangement_cache_next_after(wk_run *R, wk_arrangement *A, uint32_t seg, double s_from,
+                                          uint32_t after, wk_crossing *c) {
     if (!wk_arrangement_get(A, seg)) return not_current(R, "cache query", seg);
     const wk_arr_seg *Q = &A->seg[A->ids[seg].slot];
     wk_arr_cache *C = &A->ids[seg].cache;

@@ -19,16 +19,20 @@
 **    output is allocated before the loop, the grid is read-only and R is
 **    only read; failures are collected per slot and reported after the loop
 **    in vertex order, so the result is bit-identical for any thread count.
-** 2. Initial crossings (arrangement.c).  A second bucket grid, over the r
-**    segments; pairs sharing a cell are tested with the exact segment
-**    predicate (a float filter in front of wk_segments_meet) and a proper
-**    crossing is counted only in its canonical cell: the cell of the
-**    computed crossing point when both segments are listed there (they are,
-**    up to rounding), else the first cell in row-major order that both are
-**    listed in.  The canonical cell depends only on the pair, so each
-**    crossing is counted exactly once, and the count is exact (it never
-**    depends on rounding, only on the exact predicate).  Cells are counted in
-**    parallel with an integer reduction: deterministic.
+** 2. Initial crossings (arrangement.c).  A second bucket grid, about 4 r
+**    cells over the r segments; pairs sharing a cell are tested with the
+**    exact segment predicate (Shewchuk's stage-A float filter inline,
+**    wk_segments_meet for the undecided) and a proper crossing is counted
+**    only in its canonical cell: the cell of the computed crossing point
+**    when both segments are listed there (they are, up to rounding; a
+**    distance check proves it without table lookups), else the first cell in
+**    row-major order that both are listed in.  The canonical cell depends
+**    only on the pair, so each crossing is counted exactly once, and the
+**    count is exact (rounding only moves work between cells).  Grid entries
+**    are counted in parallel (a crowded cell is shared by all threads) with
+**    an integer reduction: deterministic.  Cost O(r^1.5 + pairs sharing a
+**    cell); when all segments pass one small region (star polygons) that is
+**    about 5 K tests: K = 12.4 million counts in ~0.6 s on one core.
 ** 3. The dynamic arrangement (wk_arrangement, arrangement.c).  Current
 **    segments sit in a dense array of slots (start point, unit direction,
 **    length, active part [lo, hi]) scanned linearly by next-crossing queries
@@ -40,7 +44,9 @@
 **    by its last refill and the range (from, to] of positions in which that
 **    list is complete.  Positions are pairs (s, id) ordered
 **    lexicographically, so crossings at the same parameter (several segments
-**    through one point) have a well-defined order and none is skipped.
+**    through one point) have a well-defined order and none is skipped.  A
+**    refill asks for k = R->opt.k (WK_K_MAX: all); its entries (16 bytes)
+**    come from R, so peak tracked bytes grow with k up to O(r + K).
 ** 4. Invalidation, exactly where needed.  Insert: a cache loses its tail
 **    from the new segment's crossing onwards when that crossing falls inside
 **    its complete range (WK_C_INVALIDATE; dropped when nothing is left).
@@ -67,6 +73,10 @@
 **     double, always by one function with the arguments in the same order,
 **     so the same pair yields the same bits in the scan, the cache and the
 **     invalidation.
+**   - coordinates: the rounding arguments above need a coordinate's rounding
+**     (2^-53 |x|) far below WK_TOL_REL times the diagonal, i.e. coordinates
+**     within ~10^6 diagonals of the origin; beyond that the grid may miss
+**     what the brute force finds.  Translate to wk_polygon_centre first.
 **
 ** Not here: moving Steiner vertices, events and the wavefront (the variant).
 */
@@ -86,23 +96,23 @@
 ** c = row * nx + col, increasing.  Read-only after build (shared by
 ** threads). */
 typedef struct wk_seg_grid {
-    double x0, y0;     /* lower-left corner of cell (0, 0) */
-    double cw, ch;     /* cell width and height (> 0, distance units) */
-    uint32_t nx, ny;   /* columns and rows, >= 1 */
-    double delta;      /* inflation distance (> 0) */
-    uint32_t n_cells;  /* nx * ny */
-    uint32_t n_items;  /* total cell entries */
-    uint32_t *start;   /* n_cells + 1 offsets */
-    uint32_t *items;   /* n_items segment ids */
+    double x0, y0;    /* lower-left corner of cell (0, 0) */
+    double cw, ch;    /* cell width and height (> 0, distance units) */
+    uint32_t nx, ny;  /* columns and rows, >= 1 */
+    double delta;     /* inflation distance (> 0) */
+    uint32_t n_cells; /* nx * ny */
+    uint32_t n_items; /* total cell entries */
+    uint32_t *start;  /* n_cells + 1 offsets */
+    uint32_t *items;  /* n_items segment ids */
     /* Optional span table (build with keep_spans): membership by lookup.
     ** Segment i spans rows row0[i] .. row0[i] + soff[i+1] - soff[i] - 1;
     ** its columns in the k-th of them are span[2 (soff[i] + k)] ..
     ** span[2 (soff[i] + k) + 1] (empty when the first exceeds the second). */
-    uint32_t nseg;     /* segments (valid with or without spans) */
-    uint32_t n_rows;   /* total rows over all segments; 0 without spans */
-    uint32_t *row0;    /* nseg, or NULL */
-    uint32_t *soff;    /* nseg + 1, or NULL */
-    uint32_t *span;    /* 2 n_rows, or NULL */
+    uint32_t nseg;   /* segments (valid with or without spans) */
+    uint32_t n_rows; /* total rows over all segments; 0 without spans */
+    uint32_t *row0;  /* nseg, or NULL */
+    uint32_t *soff;  /* nseg + 1, or NULL */
+    uint32_t *span;  /* 2 n_rows, or NULL */
 } wk_seg_grid;
 
 /* Endpoints of segment i of some collection. */
@@ -138,11 +148,10 @@ static inline uint32_t wk_seg_grid_row(const wk_seg_grid *G, double y) {
 void wk_seg_grid_rows(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t *r0, uint32_t *r1);
 /* Columns [*c0, *c1] of row `row` in which segment ab is listed; false if
 ** none.  The definition of membership. */
-bool wk_seg_grid_row_span(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t row,
-                          uint32_t *c0, uint32_t *c1);
+bool wk_seg_grid_row_span(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t row, uint32_t *c0,
+                          uint32_t *c1);
 /* True if segment ab is listed in cell (col, row). */
-bool wk_seg_grid_touches(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t col,
-                         uint32_t row);
+bool wk_seg_grid_touches(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t col, uint32_t row);
 /* The same for segment i by table lookup (grid built with keep_spans): the
 ** stored result of wk_seg_grid_row_span, so the same answer. */
 static inline bool wk_seg_grid_touches_id(const wk_seg_grid *G, uint32_t i, uint32_t col,
@@ -168,19 +177,20 @@ typedef struct wk_ray_hit {
 ** tolerance.  P must outlive it; read-only after init (thread-safe). */
 typedef struct wk_ray_shooter {
     const wk_polygon *P;
-    double tol;      /* vertex snapping distance, WK_TOL_REL * scale */
-    wk_seg_grid G;   /* over P's edges, about n cells, delta = 2 tol */
+    double tol;    /* vertex snapping distance, WK_TOL_REL * scale */
+    wk_seg_grid G; /* over P's edges, about n cells, delta = 2 tol */
 } wk_ray_shooter;
 
 /* Build the edge grid.  On failure S is left empty, and
 ** wk_ray_shooter_clear is safe on it either way. */
 wk_status wk_ray_shooter_init(wk_run *R, wk_ray_shooter *S, const wk_polygon *P);
 void wk_ray_shooter_clear(wk_run *R, wk_ray_shooter *S);
-/* First boundary point of P on the ray o + t u, t > 0 (u a unit vector, o
-** inside P's bounding box).  from_vertex: a vertex of P the ray starts at
-** (its two edges and itself are ignored), or WK_NONE.  Returns false if the
-** ray meets nothing (only possible for a ray that leaves P without crossing
-** its boundary, i.e. a bad origin); *hit is then untouched.  Pure. */
+/* First boundary point of P on the ray o + t u, t > 0 (u a unit vector).
+** from_vertex: a vertex of P the ray starts at (its two edges and itself are
+** ignored), or WK_NONE.  o may be anywhere; outside P's bounding box the
+** answer comes from the brute force.  Returns false if the ray meets
+** nothing (possible only for an origin outside P); *hit is then untouched.
+** Pure: safe from any number of threads. */
 bool wk_ray_shoot(const wk_ray_shooter *S, wk_point o, wk_point u, uint32_t from_vertex,
                   wk_ray_hit *hit);
 /* The same answer by testing every edge: O(n).  For tests, benchmarks and
@@ -193,8 +203,11 @@ bool wk_ray_shoot_brute(const wk_polygon *P, double tol, wk_point o, wk_point u,
 /* One segment of the initial arrangement A(P). */
 typedef struct wk_aseg {
     uint32_t vertex;        /* the reflex vertex of P it starts at */
-    wk_velocity_kind vkind; /* REGULAR, or ANTIPARALLEL for a needle notch
-                               (then u follows the notch, speed = INFINITY) */
+    wk_velocity_kind vkind; /* REGULAR; ANTIPARALLEL for a needle notch (u
+                               follows the notch, speed = INFINITY); STRAIGHT
+                               or COLLINEAR when the reflex turn is below
+                               kinetics.c's parallel sine (u = mean normal;
+                               speed w, or INFINITY for COLLINEAR) */
     wk_point a;             /* start: P->p[vertex] */
     wk_point b;             /* end: the first boundary point hit */
     wk_point u;             /* unit direction of the vertex's velocity */
@@ -233,10 +246,10 @@ typedef struct wk_crossing {
 
 /* One current segment (a slot of the dense array).  64 bytes. */
 typedef struct wk_arr_seg {
-    double ax, ay;  /* start point */
-    double ux, uy;  /* unit direction */
-    double len;     /* length: the segment is a + s u, s in [0, len] */
-    double lo, hi;  /* active part, 0 <= lo <= hi <= len (distance units) */
+    double ax, ay; /* start point */
+    double ux, uy; /* unit direction */
+    double len;    /* length: the segment is a + s u, s in [0, len] */
+    double lo, hi; /* active part, 0 <= lo <= hi <= len (distance units) */
     uint32_t id;
 } wk_arr_seg;
 
@@ -261,7 +274,7 @@ typedef struct wk_arr_cache {
 
 /* Per id (ids are never reused): where the segment lives and its cache. */
 typedef struct wk_arr_id {
-    uint32_t slot;    /* index into seg[], WK_NONE once removed */
+    uint32_t slot; /* index into seg[], WK_NONE once removed */
     wk_arr_cache cache;
 } wk_arr_id;
 
@@ -272,7 +285,7 @@ typedef struct wk_arr_id {
 **   (s, other), its live entries lie in (from, to], and it belongs to a
 **   current segment. */
 typedef struct wk_arrangement {
-    wk_arr_seg *seg;     /* dense, unordered (swap-remove) */
+    wk_arr_seg *seg; /* dense, unordered (swap-remove) */
     uint32_t n_live, cap_seg;
     wk_arr_id *ids;
     uint32_t n_ids, cap_ids;
@@ -289,12 +302,11 @@ void wk_arrangement_clear(wk_run *R, wk_arrangement *A);
 ** id (the number of inserts before it).  Invalidates the caches it crosses
 ** inside their complete range.  Counts WK_A_INSERT.  WK_ENOMEM leaves A
 ** unchanged; WK_EINPUT for a zero or non-finite direction or a bad len. */
-wk_status wk_arrangement_insert(wk_run *R, wk_arrangement *A, wk_point a, wk_point dir,
-                                double len, uint32_t *id);
+wk_status wk_arrangement_insert(wk_run *R, wk_arrangement *A, wk_point a, wk_point dir, double len,
+                                uint32_t *id);
 /* Insert the r segments of A(P) in order: ids first_id .. first_id + r - 1
 ** where first_id is the id count before the call. */
-wk_status wk_arrangement_insert_aseg(wk_run *R, wk_arrangement *A, const wk_aseg *segs,
-                                     uint32_t r);
+wk_status wk_arrangement_insert_aseg(wk_run *R, wk_arrangement *A, const wk_aseg *segs, uint32_t r);
 /* Remove a current segment: frees its cache and tombstones the entries of
 ** other caches that name it.  Counts WK_A_REMOVE.  WK_EALGO if id is not
 ** current (A unchanged).  Never allocates. */
@@ -318,9 +330,8 @@ const wk_arr_seg *wk_arrangement_get(const wk_arrangement *A, uint32_t id);
 ** min(k, wk_arrangement live count) entries; *count receives how many were
 ** found (< k: there are no more).  k = 0 is treated as 1.  WK_EALGO if seg
 ** is not current.  Never allocates. */
-wk_status wk_arrangement_next_crossings(wk_run *R, wk_arrangement *A, uint32_t seg,
-                                        double s_from, uint32_t k, wk_crossing *out,
-                                        uint32_t *count);
+wk_status wk_arrangement_next_crossings(wk_run *R, wk_arrangement *A, uint32_t seg, double s_from,
+                                        uint32_t k, wk_crossing *out, uint32_t *count);
 /* The same beyond the position (s_from, after): crossings at s == s_from
 ** with other > after are included, so a caller can step through several
 ** crossings at one point.  after = WK_NONE gives the plain form. */
@@ -336,11 +347,11 @@ wk_status wk_arrangement_next_crossings_after(wk_run *R, wk_arrangement *A, uint
 ** most k entries of 16 bytes per segment, plus one scratch buffer of
 ** min(k, live) crossings).  WK_ENOMEM leaves the old cache dropped and *c
 ** untouched; WK_EALGO if seg is not current. */
-wk_status wk_arrangement_cache_next(wk_run *R, wk_arrangement *A, uint32_t seg,
-                                    double s_from, wk_crossing *c);
+wk_status wk_arrangement_cache_next(wk_run *R, wk_arrangement *A, uint32_t seg, double s_from,
+                                    wk_crossing *c);
 /* The same beyond the position (s_from, after) (see _next_crossings_after). */
-wk_status wk_arrangement_cache_next_after(wk_run *R, wk_arrangement *A, uint32_t seg,
-                                          double s_from, uint32_t after, wk_crossing *c);
+wk_status wk_arrangement_cache_next_after(wk_run *R, wk_arrangement *A, uint32_t seg, double s_from,
+                                          uint32_t after, wk_crossing *c);
 
 /* The crossing of current segments a and b (a's parameter in s, b's in t),
 ** ignoring active parts; false if parallel.  The one formula every part of

@@ -55,8 +55,8 @@ static double x_at(wk_point a, wk_point b, double y) {
     return a.x + (y - a.y) * ((b.x - a.x) / (b.y - a.y));
 }
 
-bool wk_seg_grid_row_span(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t row,
-                          uint32_t *c0, uint32_t *c1) {
+bool wk_seg_grid_row_span(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t row, uint32_t *c0,
+                          uint32_t *c1) {
     double d = G->delta;
     double ylo = a.y < b.y ? a.y : b.y, yhi = a.y < b.y ? b.y : a.y;
     double xlo = a.x < b.x ? a.x : b.x, xhi = a.x < b.x ? b.x : a.x;
@@ -81,8 +81,7 @@ bool wk_seg_grid_row_span(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t
     return true;
 }
 
-bool wk_seg_grid_touches(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t col,
-                         uint32_t row) {
+bool wk_seg_grid_touches(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t col, uint32_t row) {
     uint32_t r0, r1, c0, c1;
     wk_seg_grid_rows(G, a, b, &r0, &r1);
     if (row < r0 || row > r1) return false;
@@ -93,8 +92,8 @@ bool wk_seg_grid_touches(const wk_seg_grid *G, wk_point a, wk_point b, uint32_t 
 /* Columns of segment i (endpoints a, b) in row `row` of its rows
 ** [r0, ...]: from the span table when there is one (filled by pass 0 with
 ** the same function), else computed. */
-static inline bool span_of(const wk_seg_grid *G, uint32_t i, wk_point a, wk_point b,
-                           uint32_t r0, uint32_t row, uint32_t *c0, uint32_t *c1) {
+static inline bool span_of(const wk_seg_grid *G, uint32_t i, wk_point a, wk_point b, uint32_t r0,
+                           uint32_t row, uint32_t *c0, uint32_t *c1) {
     if (!G->span) return wk_seg_grid_row_span(G, a, b, row, c0, c1);
     const uint32_t *sp = G->span + 2 * ((size_t)G->soff[i] + (row - r0));
     *c0 = sp[0];
@@ -229,8 +228,8 @@ static inline void offer(const wk_ray_hit *h, wk_ray_hit *best, bool *found) {
 /* Test edge e against the ray o + t u (see the tolerance rules in
 ** arrangement.h).  Every quantity of a vertex candidate is computed from
 ** the vertex alone, so both edges at a vertex offer the same bits. */
-static inline void test_edge(const wk_polygon *P, double tol, wk_point o, wk_point u,
-                             uint32_t skip, uint32_t e, wk_ray_hit *best, bool *found) {
+static inline void test_edge(const wk_polygon *P, double tol, wk_point o, wk_point u, uint32_t skip,
+                             uint32_t e, wk_ray_hit *best, bool *found) {
     uint32_t f = e + 1 == P->n ? 0 : e + 1;
     if (skip != WK_NONE && (e == skip || f == skip)) return;
     wk_point a = P->p[e], b = P->p[f];
@@ -268,6 +267,10 @@ bool wk_ray_shoot_brute(const wk_polygon *P, double tol, wk_point o, wk_point u,
 bool wk_ray_shoot(const wk_ray_shooter *S, wk_point o, wk_point u, uint32_t from_vertex,
                   wk_ray_hit *hit) {
     const wk_seg_grid *G = &S->G;
+    /* Defensive: the walk must start in the cell holding o. */
+    if (!(o.x >= G->x0 && o.x <= G->x0 + G->nx * G->cw && o.y >= G->y0 &&
+          o.y <= G->y0 + G->ny * G->ch))
+        return wk_ray_shoot_brute(S->P, S->tol, o, u, from_vertex, hit);
     wk_ray_hit best = {0};
     bool found = false;
     uint32_t cx = wk_seg_grid_col(G, o.x), cy = wk_seg_grid_row(G, o.y);

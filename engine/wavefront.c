@@ -52,6 +52,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef AR_DEBUG
+#include <stdio.h>
+#endif
 
 #define TWO_PI 6.283185307179586476925286766559
 
@@ -93,7 +96,7 @@ static wk_status add_arc(wk_wavefront *N, uint32_t a, uint32_t b, uint32_t left,
     if (a == b) return WK_OK; /* zero-length: nothing traced */
     if (left == right)
         return WK_FAIL(N->R, WK_EALGO, N->P->name, 0,
-                       "naive: arc between nodes %u and %u would have face %u on both sides", a, b,
+                       "wavefront: arc between nodes %u and %u would have face %u on both sides", a, b,
                        left);
     return wk_skeleton_add_arc(N->R, N->S, a, b, left, right);
 }
@@ -582,7 +585,7 @@ static wk_status plan(wk_wavefront *N, double t, bool *again) {
         for (uint32_t j = 0; j < c->count; j++) (N->slot[c->first + j] & NODE_BIT) ? nin++ : nout++;
         if (nin != nout)
             return WK_FAIL(R, WK_EALGO, N->P->name, 0,
-                           "naive: inconsistent wavefront at (%.17g, %.17g), t = %.17g: %u pieces "
+                           "wavefront: inconsistent wavefront at (%.17g, %.17g), t = %.17g: %u pieces "
                            "arrive, %u leave",
                            c->p.x, c->p.y, t, nin, nout);
         for (uint32_t j = 0; j < c->count; j++) {
@@ -604,7 +607,7 @@ static wk_status plan(wk_wavefront *N, double t, bool *again) {
             }
             if (best == WK_NONE)
                 return WK_FAIL(R, WK_EALGO, N->P->name, 0,
-                               "naive: cannot pair wavefront pieces at (%.17g, %.17g), t = %.17g",
+                               "wavefront: cannot pair wavefront pieces at (%.17g, %.17g), t = %.17g",
                                c->p.x, c->p.y, t);
             /* A turn of (nearly) 2 pi is a zero-width spike: some vertex lies on
             ** one of the two sub-pieces; make the nearer far end a node. */
@@ -614,7 +617,7 @@ static wk_status plan(wk_wavefront *N, double t, bool *again) {
                 uint32_t far = dist2(pin, c->p) < dist2(pout, c->p) ? si->from : so->to;
                 if (IS_NODE(far))
                     return WK_FAIL(R, WK_EALGO, N->P->name, 0,
-                                   "naive: unresolved spike at (%.17g, %.17g), t = %.17g", c->p.x,
+                                   "wavefront: unresolved spike at (%.17g, %.17g), t = %.17g", c->p.x,
                                    c->p.y, t);
                 if (push_u32(R, &N->forced, &N->n_forced, &N->cap_forced, far) != WK_OK)
                     return R->err.code;
@@ -776,7 +779,7 @@ static wk_status slide(wk_wavefront *N, uint32_t vi, double t) {
     return WK_OK;
 cyclic:
     return WK_FAIL(R, WK_EALGO, N->P->name, 0,
-                   "naive: a whole wavefront cycle lies on one line at t = %.17g", t);
+                   "wavefront: a whole wavefront cycle lies on one line at t = %.17g", t);
 }
 
 /* Follow pass-through pairs (same edge on both sides: no vertex) to the
@@ -843,7 +846,7 @@ static wk_status commit(wk_wavefront *N, double t) {
         }
         uint32_t head = head_vertex(N, i);
         if (head == WK_NONE)
-            return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: broken wavefront cycle at t = %.17g", t);
+            return WK_FAIL(R, WK_EALGO, N->P->name, 0, "wavefront: broken wavefront cycle at t = %.17g", t);
         link(N, tail, head);
         /* tail's next changed: its cycle is walked again by refresh */
         if (mark_fresh(N, tail) != WK_OK) return R->err.code;
@@ -930,13 +933,13 @@ static wk_status check_cycles_sane(wk_wavefront *N) {
         do {
             if (!N->v[u].alive || N->v[N->v[u].next].prev != u)
                 return WK_FAIL(N->R, WK_EALGO, N->P->name, 0,
-                               "naive: broken wavefront cycle after t = %.17g", N->t_now);
+                               "wavefront: broken wavefront cycle after t = %.17g", N->t_now);
             u = N->v[u].next;
             if (++len > N->nv) break;
         } while (u != f);
         if (len < 3)
             return WK_FAIL(N->R, WK_EALGO, N->P->name, 0,
-                           "naive: wavefront cycle of %u vertices after t = %.17g", len, N->t_now);
+                           "wavefront: wavefront cycle of %u vertices after t = %.17g", len, N->t_now);
     }
     return WK_OK;
 }
@@ -951,7 +954,7 @@ static wk_status process_group(wk_wavefront *N, double t) {
         if (plan(N, t, &again) != WK_OK) return R->err.code;
         if (!again) break;
         if (round > 64)
-            return WK_FAIL(R, WK_EALGO, N->P->name, 0, "naive: too many spikes at t = %.17g", t);
+            return WK_FAIL(R, WK_EALGO, N->P->name, 0, "wavefront: too many spikes at t = %.17g", t);
     }
     if (commit(N, t) != WK_OK || count_group(N, t) != WK_OK) return R->err.code;
     /* collinear rule for fresh vertices between parallel edges */
@@ -961,7 +964,7 @@ static wk_status process_group(wk_wavefront *N, double t) {
             return R->err.code;
         if (N->v[f].alive && N->v[f].vkind == WK_VEL_ANTIPARALLEL)
             return WK_FAIL(R, WK_EALGO, N->P->name, 0,
-                           "naive: antiparallel wavefront vertex at t = %.17g", t);
+                           "wavefront: antiparallel wavefront vertex at t = %.17g", t);
     }
     if (check_cycles_sane(N) != WK_OK) return R->err.code;
     if (N->finder->after_group && N->finder->after_group(N->finder_ud, N, t) != WK_OK)
@@ -985,7 +988,7 @@ static wk_status simulate(wk_wavefront *N) {
     for (uint32_t i = 0; i < n; i++) {
         if (N->v[i].vkind == WK_VEL_COLLINEAR && slide(N, i, 0.0) != WK_OK) return R->err.code;
         if (N->v[i].alive && N->v[i].vkind == WK_VEL_ANTIPARALLEL)
-            return WK_FAIL(R, WK_EALGO, P->name, 0, "naive: input vertex %u is a spike", i);
+            return WK_FAIL(R, WK_EALGO, P->name, 0, "wavefront: input vertex %u is a spike", i);
     }
     if (wk_event_queue_reserve(R, &N->Q, 2 * n + 16) != WK_OK) return R->err.code;
     if (N->finder->start && N->finder->start(N->finder_ud, N) != WK_OK) return R->err.code;
@@ -1013,7 +1016,7 @@ static wk_status simulate(wk_wavefront *N) {
         if (t < N->t_now) t = N->t_now;
         same_time = (t <= N->t_now + N->eps_t) ? same_time + 1 : 0;
         if (same_time > 4 * (uint64_t)P->n + 64)
-            return WK_FAIL(R, WK_EALGO, P->name, 0, "naive: no progress at t = %.17g", t);
+            return WK_FAIL(R, WK_EALGO, P->name, 0, "wavefront: no progress at t = %.17g", t);
         N->t_now = t;
         N->n_seeds = 0;
         if (push_u32(R, &N->seeds, &N->n_seeds, &N->cap_seeds, first) != WK_OK) return R->err.code;
@@ -1027,9 +1030,15 @@ static wk_status simulate(wk_wavefront *N) {
         if (process_group(N, t) != WK_OK) return R->err.code;
     }
     for (uint32_t i = 0; i < N->nv; i++)
-        if (N->v[i].alive)
+        if (N->v[i].alive) {
+#ifdef AR_DEBUG
+            wk_wf_vertex *V = &N->v[i];
+            fprintf(stderr, "alive %u reflex %d vkind %d t0 %.17g prev %u next %u ev_kind %d ev_t %g ein %u eout %u\n", i, V->reflex, V->vkind, V->t0, V->prev, V->next, V->ev_kind, V->ev_t, V->ein, V->eout);
+            for (uint32_t u = V->next; u != i; u = N->v[u].next) fprintf(stderr, "  cyc %u reflex %d ev_kind %d ev_t %g t0 %.17g\n", u, N->v[u].reflex, N->v[u].ev_kind, N->v[u].ev_t, N->v[u].t0);
+#endif
             return WK_FAIL(R, WK_EALGO, P->name, 0,
-                           "naive: wavefront vertex %u still alive when the queue ran empty", i);
+                           "wavefront: wavefront vertex %u still alive when the queue ran empty", i);
+        }
     return WK_OK;
 }
 

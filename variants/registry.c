@@ -9,6 +9,8 @@
 
 static const wk_variant *const registry[] = {
     &wk_variant_naive,
+    &wk_variant_monotone,
+    &wk_variant_arrangement,
     NULL,
 };
 

@@ -9,5 +9,7 @@
 #include "../engine/wskel.h"
 
 extern const wk_variant wk_variant_naive;
+extern const wk_variant wk_variant_monotone;
+extern const wk_variant wk_variant_arrangement;
 
 #endif

@@ -1,0 +1,627 @@
+/*
+** arrangement.c: the bisector-arrangement variant (000, section 3): the
+** shared kinetic wavefront (engine/wavefront.c) whose split events are found
+** through the arrangement A(P) of reflex-vertex segments instead of a search
+** over all wavefront pieces.
+**
+** Model.  Every reflex wavefront vertex v owns a segment s of A(P) along its
+** trajectory (000: A(P) covers all reflex arcs, Lemma 3).  A segment is the
+** static line piece o + lambda u, lambda in [0, len], from where v started
+** to where its ray first met the boundary (initially) or the wavefront (for
+** a reflex vertex born later: reflex-preserving edge events, multi-splits).
+** Along s the part not yet swept is [lambda_v(t), lambda_F(t)]: v at one
+** end, and at the other end the moving Steiner vertex F where s meets the
+** wavefront piece in front of v.  v's split event is simply v meeting F
+** (000, "split event": a reflex vertex meets a moving Steiner vertex), so no
+** search over the wavefront is needed once F is tracked.  F lies on one
+** piece (a -> a.next) and moves with that piece's offset line.
+**
+** Events of a segment (this file's queue, processed before any wavefront
+** event that is not earlier):
+**   switch: F reaches an end vertex of its piece and moves on to the
+**     neighbouring piece (000: a vertex jumps over a moving Steiner vertex);
+**   start:  F reaches the next crossing X with another segment s' (a resting
+**     Steiner vertex).  If X lies in the unswept part of s', the piece
+**     carrying F now cuts s' at X: F' := X on that piece, and s' is
+**     shortened (000, start event).  Then the next crossing of s is fetched;
+**   front:  v itself reaches a crossing X with s'; if X is in the unswept
+**     part of s', v's piece facing v' now cuts s' there.
+** The next crossing along s in either direction comes from a next-crossing
+** query over the current segments, served by the per-segment k cache of
+** engine/arrangement.c (000, section 3.2: one scan yields the next k
+** crossings; k = R->opt.k, --k max caches all).  Two arrangements hold the
+** same segments, one oriented from v's end (front events walk it forward),
+** one from the far end (F walks it forward).
+**
+** After every group of wavefront events: segments of dead reflex vertices
+** are removed; new reflex vertices get a segment (a ray against their
+** wavefront cycle, O(n), 000's O(n) insertion); an F whose piece changed is
+** placed again by the same ray shot.  Counts: switch and start events,
+** arrangement inserts/removes, queries, scanned segments, cache hits,
+** misses, refills and invalidations, the initial crossings of A(P).
+*/
+#include "../variant.h"
+#include "arrangement.h"
+#include "event_queue.h"
+#include "wavefront.h"
+
+#include <math.h>
+#include <string.h>
+#ifdef AR_DEBUG
+#include <stdio.h>
+#include <stdlib.h>
+#endif
+
+enum { AR_SWITCH = 0, AR_START = 1, AR_FRONT = 2 };
+
+typedef struct ar_seg {
+    uint32_t v;          /* its reflex vertex; WK_NONE once removed */
+    uint32_t id;         /* id in both arrangements */
+    wk_point o, u;       /* the segment: o + lambda u (relative coordinates) */
+    double len;
+    uint32_t pa, pb;     /* F's piece pa -> pb, WK_NONE if F is unknown */
+    uint32_t next_on, prev_on; /* the list of segments whose F is on piece pa */
+    wk_crossing xf;      /* next crossing F reaches (reverse parameter) */
+    wk_crossing xv;      /* next crossing v reaches (forward parameter) */
+    double ev_t;         /* its next event */
+    uint8_t ev_kind;
+    uint8_t ev_end;      /* switch: 0 F leaves over pa, 1 over pb */
+} ar_seg;
+
+typedef struct ar_state {
+    wk_run *R;
+    wk_arrangement fwd, rev; /* the same segments, from v's end / the far end */
+    ar_seg *s;
+    uint32_t n_s, cap_s;
+    uint32_t *seg_of;    /* per wavefront vertex: its segment or WK_NONE */
+    uint32_t *fhead;     /* per wavefront vertex a: first segment with F on a -> a.next */
+    uint32_t cap_v;
+    wk_event_queue Q;    /* segment events */
+    double guard_t;      /* time of the last finder event ... */
+    uint64_t guard_n;    /* ... and how many happened at that time */
+} ar_state;
+
+/* ------------------------------------------------------------ geometry */
+
+/* lambda at which s meets the offset line of edge e at time t; NaN if
+** parallel. */
+static double lambda_on_line(const ar_seg *S, const wk_offset_line *L, double t) {
+    double den = L->nx * S->u.x + L->ny * S->u.y;
+    if (fabs(den) < 1e-12) return NAN;
+    return (L->c + L->w * t - (L->nx * S->o.x + L->ny * S->o.y)) / den;
+}
+
+static double lambda_of(const ar_seg *S, wk_point p) {
+    return (p.x - S->o.x) * S->u.x + (p.y - S->o.y) * S->u.y;
+}
+
+static double lambda_v(const wk_wavefront *W, const ar_seg *S, double t) {
+    return lambda_of(S, wk_wf_pos(&W->v[S->v], t));
+}
+
+static double lambda_f(const wk_wavefront *W, const ar_seg *S, double t) {
+    if (S->pa == WK_NONE) return NAN;
+    return lambda_on_line(S, &W->L[W->v[S->pa].eout], t);
+}
+
+/* ------------------------------------------------------------ bookkeeping */
+
+static wk_status ensure_vertex_arrays(ar_state *A, uint32_t nv) {
+    if (nv <= A->cap_v) return WK_OK;
+    uint32_t ncap = A->cap_v ? A->cap_v : 64;
+    while (ncap < nv) ncap *= 2;
+    uint32_t *so = wk_realloc(A->R, A->seg_of, A->cap_v * sizeof *so, ncap * sizeof *so);
+    if (!so) return A->R->err.code;
+    A->seg_of = so;
+    uint32_t *fh = wk_realloc(A->R, A->fhead, A->cap_v * sizeof *fh, ncap * sizeof *fh);
+    if (!fh) return A->R->err.code;
+    A->fhead = fh;
+    for (uint32_t i = A->cap_v; i < ncap; i++) A->seg_of[i] = A->fhead[i] = WK_NONE;
+    A->cap_v = ncap;
+    return WK_OK;
+}
+
+static void unlink_f(ar_state *A, uint32_t si) {
+    ar_seg *S = &A->s[si];
+    if (S->pa == WK_NONE) return;
+    if (S->prev_on != WK_NONE) A->s[S->prev_on].next_on = S->next_on;
+    else A->fhead[S->pa] = S->next_on;
+    if (S->next_on != WK_NONE) A->s[S->next_on].prev_on = S->prev_on;
+    S->pa = S->pb = S->next_on = S->prev_on = WK_NONE;
+}
+
+static void link_f(ar_state *A, wk_wavefront *W, uint32_t si, uint32_t a) {
+    ar_seg *S = &A->s[si];
+    S->pa = a;
+    S->pb = W->v[a].next;
+    S->prev_on = WK_NONE;
+    S->next_on = A->fhead[a];
+    if (S->next_on != WK_NONE) A->s[S->next_on].prev_on = si;
+    A->fhead[a] = si;
+}
+
+/* The first piece of v's cycle that the ray o + lambda u (lambda >
+** lambda0) meets at time t: a static ray shot, O(cycle).  *at_end is set
+** when the hit is (within rounding) an end vertex of that piece. */
+static uint32_t shoot_at(const wk_wavefront *W, const ar_seg *S, uint32_t v, double t,
+                         double lambda0, bool *at_end) {
+    uint32_t best = WK_NONE;
+    double bl = INFINITY;
+    for (uint32_t a = W->v[v].next; a != v; a = W->v[a].next) {
+        uint32_t b = W->v[a].next;
+        if (b == v) continue; /* v's own pieces */
+        wk_point pa = wk_wf_pos(&W->v[a], t), pb = wk_wf_pos(&W->v[b], t);
+        double dx = pb.x - pa.x, dy = pb.y - pa.y;
+        double den = S->u.x * dy - S->u.y * dx;
+        if (fabs(den) < 1e-300) continue;
+        double ex = pa.x - S->o.x, ey = pa.y - S->o.y;
+        double lam = (ex * dy - ey * dx) / den;     /* along the ray */
+        double mu = (ex * S->u.y - ey * S->u.x) / den; /* along the piece, 0..1 */
+        double tol = 1e-12;
+        if (mu < -tol || mu > 1 + tol || lam <= lambda0 + W->eps_d * 1e-3) continue;
+        if (lam < bl) {
+            bl = lam;
+            best = a;
+            *at_end = mu < 1e-9 || mu > 1 - 1e-9;
+        }
+    }
+    return best;
+}
+
+/* The piece F is on just after time t.  A hit at a vertex is ambiguous (s
+** passes through a wavefront vertex right now: F may go on along either
+** piece or jump further), so the ray is shot again a moment later, when the
+** vertex has moved off s. */
+static uint32_t shoot(const wk_wavefront *W, const ar_seg *S, uint32_t v, double t, double lambda0) {
+    bool at_end = false;
+    uint32_t a = shoot_at(W, S, v, t, lambda0, &at_end);
+    if (a != WK_NONE && at_end) {
+        double later = t + 1e3 * W->eps_t;
+        uint32_t b = shoot_at(W, S, v, later, lambda_of(S, wk_wf_pos(&W->v[v], later)), &at_end);
+        if (b != WK_NONE) a = b;
+    }
+    return a;
+}
+
+/* --------------------------------------------------------------- events */
+
+/* Times at which F leaves its piece (switch) and reaches its next crossing
+** (start), and at which v reaches its next crossing (front). */
+static void seg_event(ar_state *A, wk_wavefront *W, uint32_t si) {
+    ar_seg *S = &A->s[si];
+    double now = W->t_now;
+    S->ev_t = INFINITY;
+    S->ev_kind = AR_SWITCH;
+    if (S->v == WK_NONE) return;
+    if (S->pa != WK_NONE) {
+        const wk_wf_vertex *Pa = &W->v[S->pa], *Pb = &W->v[S->pb];
+        const wk_offset_line *L = &W->L[Pa->eout];
+        /* F on the piece's line: sigma(t) = (F(t) - a(t)) . u_e, linear in t */
+        double l0 = lambda_on_line(S, L, now), l1 = lambda_on_line(S, L, now + 1);
+        if (isfinite(l0) && isfinite(l1)) {
+            wk_point f0 = {S->o.x + l0 * S->u.x, S->o.y + l0 * S->u.y};
+            wk_point f1 = {S->o.x + l1 * S->u.x, S->o.y + l1 * S->u.y};
+            wk_point a0 = wk_wf_pos(Pa, now), a1 = wk_wf_pos(Pa, now + 1);
+            wk_point b0 = wk_wf_pos(Pb, now), b1 = wk_wf_pos(Pb, now + 1);
+            double sa0 = (f0.x - a0.x) * L->ux + (f0.y - a0.y) * L->uy;
+            double sa1 = (f1.x - a1.x) * L->ux + (f1.y - a1.y) * L->uy;
+            double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
+            double sb1 = (b1.x - f1.x) * L->ux + (b1.y - f1.y) * L->uy;
+            double ra = sa1 - sa0, rb = sb1 - sb0;
+            /* F riding along with an end vertex (that vertex moves on s
+            ** itself: head-on reflex vertices) never leaves the piece */
+            double tiny = 1e-10 * (fabs(l1 - l0) + L->w);
+            if (ra < -tiny) {
+                double te = now + (sa0 > 0 ? sa0 : 0) / -ra;
+                if (te < S->ev_t) S->ev_t = te, S->ev_kind = AR_SWITCH, S->ev_end = 0;
+            }
+            if (rb < -tiny) {
+                double te = now + (sb0 > 0 ? sb0 : 0) / -rb;
+                if (te < S->ev_t) S->ev_t = te, S->ev_kind = AR_SWITCH, S->ev_end = 1;
+            }
+            /* F reaching its next crossing: lambda_f falls to len - xf.s */
+            if (S->xf.other != WK_NONE) {
+                double target = S->len - S->xf.s, rate = l1 - l0;
+                if (rate < 0) {
+                    double te = now + (l0 > target ? (l0 - target) : 0) / -rate;
+                    if (te < S->ev_t) S->ev_t = te, S->ev_kind = AR_START;
+                }
+            }
+        }
+    }
+    if (S->xv.other != WK_NONE) {
+        const wk_wf_vertex *V = &W->v[S->v];
+        double rate = V->vel.x * S->u.x + V->vel.y * S->u.y;
+        double lv = lambda_v(W, S, now);
+        if (rate > 0) {
+            double te = now + (S->xv.s > lv ? S->xv.s - lv : 0) / rate;
+            if (te < S->ev_t) S->ev_t = te, S->ev_kind = AR_FRONT;
+        }
+    }
+}
+
+static wk_status schedule_seg(ar_state *A, wk_wavefront *W, uint32_t si) {
+    seg_event(A, W, si);
+    ar_seg *S = &A->s[si];
+    if (!isfinite(S->ev_t)) {
+        wk_event_queue_remove(A->R, &A->Q, si);
+        return WK_OK;
+    }
+    double t = S->ev_t < W->t_now ? W->t_now : S->ev_t;
+    return wk_event_queue_set(A->R, &A->Q, si, (wk_event_key){t, S->ev_kind});
+}
+
+/* The next crossing F meets beyond the position (sr, after) of the
+** reverse arrangement (sr: distance from the far end). */
+static wk_status fetch_xf_rev(ar_state *A, uint32_t si, double sr, uint32_t after) {
+    ar_seg *S = &A->s[si];
+    return wk_arrangement_cache_next_after(A->R, &A->rev, S->id, sr < 0 ? 0 : sr, after, &S->xf);
+}
+
+/* The same from F's position lambda (distance from v's end). */
+static wk_status fetch_xf(ar_state *A, uint32_t si, double lambda, uint32_t after) {
+    return fetch_xf_rev(A, si, A->s[si].len - lambda, after);
+}
+
+static wk_status fetch_xv(ar_state *A, uint32_t si, double lambda, uint32_t after) {
+    ar_seg *S = &A->s[si];
+    return wk_arrangement_cache_next_after(A->R, &A->fwd, S->id, lambda < 0 ? 0 : lambda, after,
+                                           &S->xv);
+}
+
+/* Place F of segment si by a ray shot from its vertex at time t. */
+static wk_status place_f(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
+    ar_seg *S = &A->s[si];
+    unlink_f(A, si);
+    double lv = lambda_v(W, S, t);
+    uint32_t a = shoot(W, S, S->v, t, lv);
+    if (a == WK_NONE) return WK_OK; /* F unknown: v's split is searched directly */
+    link_f(A, W, si, a);
+    double lf = lambda_f(W, S, t);
+    if (fetch_xf(A, si, isfinite(lf) ? lf : S->len, WK_NONE) != WK_OK) return A->R->err.code;
+    return WK_OK;
+}
+
+/* A new segment for reflex vertex v from its position at time t to where
+** its ray meets the wavefront; F placed, next crossings not yet fetched. */
+static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double t, uint32_t *out) {
+    wk_run *R = A->R;
+    const wk_wf_vertex *V = &W->v[v];
+    double sp = hypot(V->vel.x, V->vel.y);
+    if (!(sp > 0)) return WK_FAIL(R, WK_EALGO, W->P->name, 0, "arrangement: reflex vertex at rest");
+    if (WK_GROW(R, A->s, A->cap_s, A->n_s + 1) != WK_OK) return R->err.code;
+    uint32_t si = A->n_s;
+    ar_seg *S = &A->s[si];
+    memset(S, 0, sizeof *S);
+    S->v = v;
+    S->o = wk_wf_pos(V, t);
+    S->u = (wk_point){V->vel.x / sp, V->vel.y / sp};
+    S->pa = S->pb = S->next_on = S->prev_on = WK_NONE;
+    S->xf.other = S->xv.other = WK_NONE;
+    uint32_t a = shoot(W, S, v, t, 0);
+    double lf = a == WK_NONE ? NAN : lambda_on_line(S, &W->L[W->v[a].eout], t);
+    S->len = isfinite(lf) && lf > 0 ? lf : 0;
+    uint32_t id1, id2;
+    wk_point far = {S->o.x + S->len * S->u.x, S->o.y + S->len * S->u.y};
+    if (wk_arrangement_insert(R, &A->fwd, S->o, S->u, S->len, &id1) != WK_OK ||
+        wk_arrangement_insert(R, &A->rev, far, (wk_point){-S->u.x, -S->u.y}, S->len, &id2) != WK_OK)
+        return R->err.code;
+    S = &A->s[si];
+    S->id = id1;
+    if (id1 != si || id2 != si)
+        return WK_FAIL(R, WK_EALGO, W->P->name, 0, "arrangement: segment ids out of step");
+    A->n_s++;
+    A->seg_of[v] = si;
+    if (a != WK_NONE) link_f(A, W, si, a);
+    *out = si;
+    return WK_OK;
+}
+
+/* Fetch the next crossings of segment si from where v and F are now. */
+static wk_status arm_segment(ar_state *A, wk_wavefront *W, uint32_t si) {
+    ar_seg *S = &A->s[si];
+    double t = W->t_now, lf = lambda_f(W, S, t), lv = lambda_v(W, S, t);
+    if (fetch_xf(A, si, isfinite(lf) ? lf : S->len, WK_NONE) != WK_OK ||
+        fetch_xv(A, si, lv, WK_NONE) != WK_OK)
+        return A->R->err.code;
+    return schedule_seg(A, W, si);
+}
+
+/* A segment inserted after the start may cross another segment between its
+** v or F and the next crossing that one had fetched: fetch again. */
+static wk_status notify_insert(ar_state *A, wk_wavefront *W, uint32_t si) {
+    const wk_arr_seg *N = wk_arrangement_get(&A->fwd, A->s[si].id);
+    double t = W->t_now;
+    for (uint32_t j = 0; j < A->n_s; j++) {
+        if (j == si || A->s[j].v == WK_NONE) continue;
+        const wk_arr_seg *T = wk_arrangement_get(&A->fwd, A->s[j].id);
+        double sn, lam;
+        if (!N || !T || !wk_arrangement_crossing(N, T, &sn, &lam)) continue;
+        if (sn < 0 || sn > N->len || lam < 0 || lam > T->len) continue;
+        ar_seg *S = &A->s[j];
+        double lv = lambda_v(W, S, t), lf = lambda_f(W, S, t);
+        double next_v = S->xv.other == WK_NONE ? INFINITY : S->xv.s;
+        double next_f = S->xf.other == WK_NONE ? -INFINITY : S->len - S->xf.s;
+        bool again = false;
+        if (lam > lv && lam < next_v) again = true;
+        if ((!isfinite(lf) || lam < lf) && lam > next_f) again = true;
+        if (again && arm_segment(A, W, j) != WK_OK) return A->R->err.code;
+    }
+    return WK_OK;
+}
+
+static wk_status remove_segment(ar_state *A, uint32_t si) {
+    ar_seg *S = &A->s[si];
+    unlink_f(A, si);
+    A->seg_of[S->v] = WK_NONE;
+    S->v = WK_NONE;
+    wk_event_queue_remove(A->R, &A->Q, si);
+    if (wk_arrangement_remove(A->R, &A->fwd, S->id) != WK_OK ||
+        wk_arrangement_remove(A->R, &A->rev, S->id) != WK_OK)
+        return A->R->err.code;
+    return WK_OK;
+}
+
+/* -------------------------------------------------------------- hooks */
+
+/* Defensive fallback: v's first hit over its whole cycle, for the rare
+** reflex vertex whose F is unknown (its ray met no piece: a vanishing
+** cycle, or a ray through a vertex that stays ambiguous). */
+static void brute_split(wk_wavefront *W, uint32_t v) {
+    double best = W->v[v].ev_t;
+    wk_point bp = W->v[v].ev_p;
+    uint32_t ta = WK_NONE, tb = WK_NONE;
+    for (uint32_t a = W->v[v].next; a != v; a = W->v[a].next)
+        wk_wavefront_split_test(W, v, a, &best, &bp, &ta, &tb);
+    wk_wavefront_offer_split(W, v, best, bp, ta, tb);
+}
+
+/* v's split: v meets F along its segment. */
+static void ar_full(void *ud, wk_wavefront *W, uint32_t v) {
+    ar_state *A = ud;
+    if (v >= A->cap_v || A->seg_of[v] == WK_NONE) {
+        brute_split(W, v); /* born in this group: its segment comes after it */
+        return;
+    }
+    const ar_seg *S = &A->s[A->seg_of[v]];
+    if (S->pa == WK_NONE || !W->v[S->pa].alive || W->v[S->pa].next != S->pb) {
+        brute_split(W, v);
+        return;
+    }
+    double t0 = W->t_now;
+    double lv0 = lambda_v(W, S, t0), lv1 = lambda_v(W, S, t0 + 1);
+    double lf0 = lambda_f(W, S, t0), lf1 = lambda_f(W, S, t0 + 1);
+    if (!isfinite(lf0) || !isfinite(lf1)) return;
+    double gap = lf0 - lv0, rate = (lf1 - lf0) - (lv1 - lv0);
+    if (!(rate < 0)) return;
+    double t = t0 + (gap > 0 ? gap : 0) / -rate;
+    wk_point p = wk_wf_pos(&W->v[v], t);
+    wk_wavefront_offer_split(W, v, t, p, S->pa, S->pb);
+}
+
+static void ar_incremental(void *ud, wk_wavefront *W, uint32_t v) { ar_full(ud, W, v); }
+
+static wk_status ar_start(void *ud, wk_wavefront *W) {
+    ar_state *A = ud;
+    wk_run *R = A->R;
+    const wk_polygon *P = W->P;
+    if (ensure_vertex_arrays(A, W->nv) != WK_OK) return R->err.code;
+    wk_aseg *segs = NULL;
+    uint32_t r = 0;
+    uint64_t crossings = 0;
+    if (wk_arrangement_segments(R, P, &segs, &r) != WK_OK) return R->err.code;
+    wk_status st = wk_arrangement_count_crossings(R, segs, r, &crossings);
+    /* all segments first, so that each one's first crossings see the others */
+    for (uint32_t i = 0; st == WK_OK && i < r; i++) {
+        uint32_t v = segs[i].vertex, si;
+        if (!W->v[v].alive || !W->v[v].reflex) continue; /* changed by the collinear rule */
+        st = create_segment(A, W, v, 0.0, &si);
+    }
+    if (segs) WK_FREE_ARRAY(R, segs, r);
+    for (uint32_t si = 0; st == WK_OK && si < A->n_s; si++) st = arm_segment(A, W, si);
+    return st;
+}
+
+static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
+    ar_state *A = ud;
+    wk_run *R = A->R;
+#ifdef AR_DEBUG
+    {
+        static double last_checked = -1;
+        if (t > last_checked) {
+            last_checked = t;
+            for (uint32_t v = 0; v < W->nv; v++) {
+                if (!W->v[v].alive || !W->v[v].reflex || W->v[v].fresh) continue;
+                double best = INFINITY; wk_point bp; uint32_t ta = WK_NONE, tb = WK_NONE;
+                double save = W->t_now;
+                static double prev_t = 0;
+                W->t_now = prev_t > W->v[v].t0 ? prev_t : W->v[v].t0;
+                for (uint32_t a = W->v[v].next; a != v; a = W->v[a].next)
+                    wk_wavefront_split_test(W, v, a, &best, &bp, &ta, &tb);
+                W->t_now = save;
+                if (v + 1 == W->nv) prev_t = t;
+                if (best < t - 1e-6) {
+                    uint32_t si = v < A->cap_v ? A->seg_of[v] : WK_NONE;
+                    fprintf(stderr, "MISSED at t %.9g: v %u seg %u (F on %u->%u) should have hit %u->%u at %.9g\n", t, v, si, si != WK_NONE ? A->s[si].pa : 0, si != WK_NONE ? A->s[si].pb : 0, ta, tb, best);
+                    exit(1);
+                }
+            }
+        }
+    }
+#endif
+    if (ensure_vertex_arrays(A, W->nv) != WK_OK) return R->err.code;
+    /* segments of dead reflex vertices leave A(P) */
+    for (uint32_t si = 0; si < A->n_s; si++) {
+        ar_seg *S = &A->s[si];
+        if (S->v != WK_NONE && !W->v[S->v].alive && remove_segment(A, si) != WK_OK)
+            return R->err.code;
+    }
+    /* Fs on pieces that changed are placed again */
+    for (uint32_t si = 0; si < A->n_s; si++) {
+        ar_seg *S = &A->s[si];
+        if (S->v == WK_NONE) continue;
+        if (S->pa == WK_NONE || !W->v[S->pa].alive || W->v[S->pa].next != S->pb) {
+            if (place_f(A, W, si, t) != WK_OK || schedule_seg(A, W, si) != WK_OK) return R->err.code;
+        }
+    }
+    /* new reflex vertices get a segment */
+    for (uint32_t i = 0; i < W->n_fresh; i++) {
+        uint32_t v = W->fresh[i];
+        if (!W->v[v].alive || !W->v[v].reflex || A->seg_of[v] != WK_NONE) continue;
+        uint32_t si;
+        if (create_segment(A, W, v, t, &si) != WK_OK || arm_segment(A, W, si) != WK_OK ||
+            notify_insert(A, W, si) != WK_OK)
+            return R->err.code;
+    }
+    return WK_OK;
+}
+
+static double ar_next_time(void *ud) {
+    ar_state *A = ud;
+    if (!A->Q.size) return INFINITY;
+    return A->Q.key[wk_event_queue_peek(&A->Q)].time;
+}
+
+/* Cut s' at lambda' (a crossing X): F' := X on piece a. */
+static wk_status cut(ar_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via) {
+    ar_seg *T = &A->s[sj];
+#ifdef AR_DEBUG
+    if (a == T->v || W->v[a].next == T->v) fprintf(stderr, "CUT onto own piece: seg %u v %u by seg %u (v %u) piece %u->%u at t %.17g lam %.9g lv %.9g lf %.9g\n", sj, T->v, via, A->s[via].v, a, W->v[a].next, W->t_now, lam, lambda_v(W, T, W->t_now), lambda_f(W, T, W->t_now));
+#endif
+    unlink_f(A, sj);
+    link_f(A, W, sj, a);
+    if (fetch_xf(A, sj, lam, via) != WK_OK) return A->R->err.code;
+    if (schedule_seg(A, W, sj) != WK_OK) return A->R->err.code;
+    return wk_wavefront_reschedule(W, T->v);
+}
+
+static wk_status ar_process_next(void *ud, wk_wavefront *W) {
+    ar_state *A = ud;
+    wk_run *R = A->R;
+    uint32_t si = wk_event_queue_pop(R, &A->Q);
+    ar_seg *S = &A->s[si];
+    double t = W->t_now;
+    /* Defensive: F bouncing between two pieces at one vertex would never
+    ** end; every legitimate burst at one instant is bounded by the number of
+    ** segment-piece incidences. */
+    A->guard_n = t == A->guard_t ? A->guard_n + 1 : 0;
+    A->guard_t = t;
+#ifdef AR_DEBUG
+    if (A->guard_n > 16 * ((uint64_t)A->n_s + W->nv) + 1000)
+        fprintf(stderr, "seg %u kind %d v %u pa %u pb %u xf %u %.17g xv %u %.17g lf %.17g lv %.17g\n", si, S->ev_kind, S->v, S->pa, S->pb, S->xf.other, S->xf.s, S->xv.other, S->xv.s, lambda_f(W, S, t), lambda_v(W, S, t));
+#endif
+    if (A->guard_n > 16 * ((uint64_t)A->n_s + W->nv) + 1024)
+        return WK_FAIL(R, WK_EALGO, W->P->name, 0, "arrangement: no progress at t = %.17g", t);
+    wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
+    if (S->v == WK_NONE) return WK_OK;
+    if (S->ev_kind == AR_SWITCH) {
+        /* F leaves its piece over one of the piece's ends */
+        uint32_t u = S->ev_end ? S->pb : S->pa; /* the vertex F passes */
+        uint32_t a = S->ev_end ? S->pb : W->v[S->pa].prev;
+        double sa = 0, sb = 0;
+        (void)sa;
+        (void)sb;
+        unlink_f(A, si);
+        link_f(A, W, si, a);
+        wk_notify_event(R, WK_EV_SWITCH, &ev);
+        seg_event(A, W, si);
+        /* Over a convex vertex F simply continues on the next piece.  At a
+        ** reflex vertex (or when F would bounce straight back) the first
+        ** wavefront point along s may jump: shoot the ray again. */
+        uint32_t v = A->s[si].v;
+        bool own = a == v || W->v[a].next == v; /* never F on v's own pieces */
+        if (own || W->v[u].reflex || (A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t)) {
+            if (place_f(A, W, si, t) != WK_OK) return R->err.code;
+        }
+#ifdef AR_DEBUG
+        if (A->guard_n > 16 * ((uint64_t)A->n_s + W->nv) + 1000) {
+            bool ae = false;
+            uint32_t h = shoot_at(W, &A->s[si], A->s[si].v, t, lambda_v(W, &A->s[si], t), &ae);
+            double later = t + 1e3 * W->eps_t;
+            bool ae2 = false;
+            uint32_t h2 = shoot_at(W, &A->s[si], A->s[si].v, later, lambda_v(W, &A->s[si], later), &ae2);
+            seg_event(A, W, si);
+            fprintf(stderr, "  switch sa %g sb %g u %u reflex %d -> a %u; after place pa %u; shot %u end %d, later %u end %d; ev %d %.17g\n", sa, sb, u, W->v[u].reflex, a, A->s[si].pa, h, ae, h2, ae2, A->s[si].ev_kind, A->s[si].ev_t);
+        }
+#endif
+        S = &A->s[si];
+        if (schedule_seg(A, W, si) != WK_OK) return R->err.code;
+        return wk_wavefront_reschedule(W, S->v);
+    }
+    if (S->ev_kind == AR_START) {
+        /* F reaches the crossing with s' */
+        wk_crossing x = S->xf;
+        wk_notify_event(R, WK_EV_START, &ev);
+        double lam = S->len - x.s;
+        /* ids are handed out in insertion order, one per segment: id == index */
+        uint32_t sj = x.other < A->n_s && A->s[x.other].v != WK_NONE ? x.other : WK_NONE;
+        if (sj != WK_NONE) {
+            ar_seg *T = &A->s[sj];
+            wk_point X = {S->o.x + lam * S->u.x, S->o.y + lam * S->u.y};
+            double lx = lambda_of(T, X), lv = lambda_v(W, T, t), lf = lambda_f(W, T, t);
+            if (lx > lv + W->eps_d && (!isfinite(lf) || lx < lf - W->eps_d)) {
+                if (cut(A, W, sj, S->pa, lx, S->id) != WK_OK) return R->err.code;
+            }
+        }
+        S = &A->s[si];
+        if (fetch_xf_rev(A, si, x.s, x.other) != WK_OK) return R->err.code;
+        return schedule_seg(A, W, si);
+    }
+    /* AR_FRONT: v reaches the crossing with s' */
+    wk_crossing x = S->xv;
+    wk_notify_event(R, WK_EV_START, &ev);
+    uint32_t sj = x.other < A->n_s && A->s[x.other].v != WK_NONE ? x.other : WK_NONE;
+    if (sj != WK_NONE) {
+        ar_seg *T = &A->s[sj];
+        wk_point X = {S->o.x + x.s * S->u.x, S->o.y + x.s * S->u.y};
+        double lx = lambda_of(T, X), lv = lambda_v(W, T, t), lf = lambda_f(W, T, t);
+        if (lx > lv + W->eps_d && (!isfinite(lf) || lx < lf - W->eps_d)) {
+            /* which of v's pieces faces v': the one whose crossing with s'
+            ** moves towards v' */
+            uint32_t v = S->v, cand[2] = {W->v[v].prev, v}, pick = WK_NONE;
+            double best = INFINITY;
+            for (int c = 0; c < 2; c++) {
+                double l1 = lambda_on_line(T, &W->L[W->v[cand[c]].eout], t + 1);
+                double l0 = lambda_on_line(T, &W->L[W->v[cand[c]].eout], t);
+                if (isfinite(l0) && isfinite(l1) && l1 - l0 < best) {
+                    best = l1 - l0;
+                    pick = cand[c];
+                }
+            }
+            if (pick != WK_NONE && cut(A, W, sj, pick, lx, S->id) != WK_OK) return R->err.code;
+        }
+    }
+    S = &A->s[si];
+    if (fetch_xv(A, si, x.s, x.other) != WK_OK) return R->err.code;
+    return schedule_seg(A, W, si);
+}
+
+static const wk_split_finder arrangement_finder = {
+    ar_full, ar_incremental, ar_start, ar_after_group, ar_next_time, ar_process_next,
+};
+
+static wk_status arrangement_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
+    ar_state A;
+    memset(&A, 0, sizeof A);
+    A.R = R;
+    wk_arrangement_init(&A.fwd);
+    wk_arrangement_init(&A.rev);
+    wk_event_queue_init(&A.Q);
+    wk_status st = wk_wavefront_run(R, P, &arrangement_finder, &A, out);
+    wk_arrangement_clear(R, &A.fwd);
+    wk_arrangement_clear(R, &A.rev);
+    wk_event_queue_clear(R, &A.Q);
+    WK_FREE_ARRAY(R, A.s, A.cap_s);
+    if (A.cap_v) {
+        WK_FREE_ARRAY(R, A.seg_of, A.cap_v);
+        WK_FREE_ARRAY(R, A.fhead, A.cap_v);
+    }
+    return st;
+}
+
+const wk_variant wk_variant_arrangement = {
+    "arrangement",
+    "bisector arrangement A(P) with the next-k-crossings cache (--k)",
+    WK_VARIANT_WEIGHTS | WK_VARIANT_USES_K,
+    arrangement_run,
+};
