@@ -208,6 +208,10 @@ static void seg_event(ar_state *A, wk_wavefront *W, uint32_t si) {
             double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
             double sb1 = (b1.x - f1.x) * L->ux + (b1.y - f1.y) * L->uy;
             double ra = sa1 - sa0, rb = sb1 - sb0;
+#ifdef AR_DEBUG
+            if (getenv("AR_SEG") && si == (uint32_t)atoi(getenv("AR_SEG")))
+                fprintf(stderr, "  EV seg %u now %.17g piece %u->%u sa0 %g ra %g sb0 %g rb %g l0 %g l1 %g xf %u\n", si, now, S->pa, S->pb, sa0, ra, sb0, rb, l0, l1, S->xf.other);
+#endif
             /* F riding along with an end vertex (that vertex moves on s
             ** itself: head-on reflex vertices) never leaves the piece */
             double tiny = 1e-10 * (fabs(l1 - l0) + L->w);
@@ -275,6 +279,10 @@ static wk_status place_f(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
     unlink_f(A, si);
     double lv = lambda_v(W, S, t);
     uint32_t a = shoot(W, S, S->v, t, lv);
+#ifdef AR_DEBUG
+    if (getenv("AR_SEG") && si == (uint32_t)atoi(getenv("AR_SEG")))
+        fprintf(stderr, "PLACE seg %u at %.17g -> %u->%u\n", si, t, a, a == WK_NONE ? 0 : W->v[a].next);
+#endif
     if (a == WK_NONE) return WK_OK; /* F unknown: v's split is searched directly */
     link_f(A, W, si, a);
     double lf = lambda_f(W, S, t);
@@ -486,13 +494,29 @@ static double ar_next_time(void *ud) {
 static wk_status cut(ar_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via) {
     ar_seg *T = &A->s[sj];
 #ifdef AR_DEBUG
+    if (getenv("AR_SEG") && sj == (uint32_t)atoi(getenv("AR_SEG")))
+        fprintf(stderr, "CUT seg %u at %.17g by seg %u onto %u->%u lam %.9g\n", sj, W->t_now, via, a, W->v[a].next, lam);
+#endif
+#ifdef AR_DEBUG
     if (a == T->v || W->v[a].next == T->v) fprintf(stderr, "CUT onto own piece: seg %u v %u by seg %u (v %u) piece %u->%u at t %.17g lam %.9g lv %.9g lf %.9g\n", sj, T->v, via, A->s[via].v, a, W->v[a].next, W->t_now, lam, lambda_v(W, T, W->t_now), lambda_f(W, T, W->t_now));
 #endif
     unlink_f(A, sj);
     link_f(A, W, sj, a);
-    if (fetch_xf(A, sj, lam, via) != WK_OK) return A->R->err.code;
+    /* F' must approach v' along s'.  At a corner of the wavefront (X at an
+    ** end of the piece) the piece may face away from v': then the ray shot
+    ** decides. */
+    double t = W->t_now;
+    double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
+    if (!(l1 < l0)) {
+        if (place_f(A, W, sj, t) != WK_OK) return A->R->err.code;
+        T = &A->s[sj];
+        double lf = lambda_f(W, T, t);
+        if (fetch_xf(A, sj, isfinite(lf) ? lf : T->len, WK_NONE) != WK_OK) return A->R->err.code;
+    } else if (fetch_xf(A, sj, lam, via) != WK_OK) {
+        return A->R->err.code;
+    }
     if (schedule_seg(A, W, sj) != WK_OK) return A->R->err.code;
-    return wk_wavefront_reschedule(W, T->v);
+    return wk_wavefront_reschedule(W, A->s[sj].v);
 }
 
 static wk_status ar_process_next(void *ud, wk_wavefront *W) {
@@ -534,6 +558,8 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
             if (place_f(A, W, si, t) != WK_OK) return R->err.code;
         }
 #ifdef AR_DEBUG
+        if (getenv("AR_SEG") && si == (uint32_t)atoi(getenv("AR_SEG")))
+            fprintf(stderr, "SWITCH seg %u at %.17g over %u (reflex %d) -> piece %u->%u (own %d)\n", si, t, u, W->v[u].reflex, A->s[si].pa, A->s[si].pb, own);
         if (A->guard_n > 16 * ((uint64_t)A->n_s + W->nv) + 1000) {
             bool ae = false;
             uint32_t h = shoot_at(W, &A->s[si], A->s[si].v, t, lambda_v(W, &A->s[si], t), &ae);
