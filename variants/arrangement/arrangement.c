@@ -540,6 +540,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
     if (S->v == WK_NONE) return WK_OK;
     if (S->ev_kind == AR_SWITCH) {
         /* F leaves its piece over one of the piece's ends */
+        uint32_t old_pa = S->pa;
         uint32_t u = S->ev_end ? S->pb : S->pa; /* the vertex F passes */
         uint32_t a = S->ev_end ? S->pb : W->v[S->pa].prev;
         double sa = 0, sb = 0;
@@ -556,6 +557,12 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
         bool own = a == v || W->v[a].next == v; /* never F on v's own pieces */
         if (own || W->v[u].reflex || (A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t)) {
             if (place_f(A, W, si, t) != WK_OK) return R->err.code;
+            /* The shot disagrees with the event (rounding right at a
+            ** corner): F is left unknown, v's split is searched directly
+            ** until the next group places F again.  Keeps progress. */
+            seg_event(A, W, si);
+            if (A->s[si].pa == old_pa && A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t)
+                unlink_f(A, si);
         }
 #ifdef AR_DEBUG
         if (getenv("AR_SEG") && si == (uint32_t)atoi(getenv("AR_SEG")))
