@@ -52,9 +52,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#ifdef AR_DEBUG
-#include <stdio.h>
-#endif
 
 #define TWO_PI 6.283185307179586476925286766559
 
@@ -1031,11 +1028,6 @@ static wk_status simulate(wk_wavefront *N) {
     }
     for (uint32_t i = 0; i < N->nv; i++)
         if (N->v[i].alive) {
-#ifdef AR_DEBUG
-            wk_wf_vertex *V = &N->v[i];
-            fprintf(stderr, "alive %u reflex %d vkind %d t0 %.17g prev %u next %u ev_kind %d ev_t %g ein %u eout %u\n", i, V->reflex, V->vkind, V->t0, V->prev, V->next, V->ev_kind, V->ev_t, V->ein, V->eout);
-            for (uint32_t u = V->next; u != i; u = N->v[u].next) fprintf(stderr, "  cyc %u reflex %d ev_kind %d ev_t %g t0 %.17g\n", u, N->v[u].reflex, N->v[u].ev_kind, N->v[u].ev_t, N->v[u].t0);
-#endif
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "wavefront: wavefront vertex %u still alive when the queue ran empty", i);
         }

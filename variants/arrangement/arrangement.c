@@ -47,10 +47,6 @@
 
 #include <math.h>
 #include <string.h>
-#ifdef AR_DEBUG
-#include <stdio.h>
-#include <stdlib.h>
-#endif
 
 enum { AR_SWITCH = 0, AR_START = 1, AR_FRONT = 2 };
 
@@ -110,13 +106,23 @@ static wk_status ensure_vertex_arrays(ar_state *A, uint32_t nv) {
     if (nv <= A->cap_v) return WK_OK;
     uint32_t ncap = A->cap_v ? A->cap_v : 64;
     while (ncap < nv) ncap *= 2;
-    uint32_t *so = wk_realloc(A->R, A->seg_of, A->cap_v * sizeof *so, ncap * sizeof *so);
-    if (!so) return A->R->err.code;
+    /* both new arrays before touching A, so a failure leaves A consistent */
+    uint32_t *so = WK_NEW_ARRAY(A->R, uint32_t, ncap);
+    uint32_t *fh = so ? WK_NEW_ARRAY(A->R, uint32_t, ncap) : NULL;
+    if (!fh) {
+        if (so) WK_FREE_ARRAY(A->R, so, ncap);
+        return A->R->err.code;
+    }
+    for (uint32_t i = 0; i < ncap; i++) {
+        so[i] = i < A->cap_v ? A->seg_of[i] : WK_NONE;
+        fh[i] = i < A->cap_v ? A->fhead[i] : WK_NONE;
+    }
+    if (A->cap_v) {
+        WK_FREE_ARRAY(A->R, A->seg_of, A->cap_v);
+        WK_FREE_ARRAY(A->R, A->fhead, A->cap_v);
+    }
     A->seg_of = so;
-    uint32_t *fh = wk_realloc(A->R, A->fhead, A->cap_v * sizeof *fh, ncap * sizeof *fh);
-    if (!fh) return A->R->err.code;
     A->fhead = fh;
-    for (uint32_t i = A->cap_v; i < ncap; i++) A->seg_of[i] = A->fhead[i] = WK_NONE;
     A->cap_v = ncap;
     return WK_OK;
 }
@@ -208,10 +214,6 @@ static void seg_event(ar_state *A, wk_wavefront *W, uint32_t si) {
             double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
             double sb1 = (b1.x - f1.x) * L->ux + (b1.y - f1.y) * L->uy;
             double ra = sa1 - sa0, rb = sb1 - sb0;
-#ifdef AR_DEBUG
-            if (getenv("AR_SEG") && si == (uint32_t)atoi(getenv("AR_SEG")))
-                fprintf(stderr, "  EV seg %u now %.17g piece %u->%u sa0 %g ra %g sb0 %g rb %g l0 %g l1 %g xf %u\n", si, now, S->pa, S->pb, sa0, ra, sb0, rb, l0, l1, S->xf.other);
-#endif
             /* F riding along with an end vertex (that vertex moves on s
             ** itself: head-on reflex vertices) never leaves the piece */
             double tiny = 1e-10 * (fabs(l1 - l0) + L->w);
@@ -279,10 +281,6 @@ static wk_status place_f(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
     unlink_f(A, si);
     double lv = lambda_v(W, S, t);
     uint32_t a = shoot(W, S, S->v, t, lv);
-#ifdef AR_DEBUG
-    if (getenv("AR_SEG") && si == (uint32_t)atoi(getenv("AR_SEG")))
-        fprintf(stderr, "PLACE seg %u at %.17g -> %u->%u\n", si, t, a, a == WK_NONE ? 0 : W->v[a].next);
-#endif
     if (a == WK_NONE) return WK_OK; /* F unknown: v's split is searched directly */
     link_f(A, W, si, a);
     double lf = lambda_f(W, S, t);
@@ -433,30 +431,6 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
 static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
     ar_state *A = ud;
     wk_run *R = A->R;
-#ifdef AR_DEBUG
-    {
-        static double last_checked = -1;
-        if (t > last_checked) {
-            last_checked = t;
-            for (uint32_t v = 0; v < W->nv; v++) {
-                if (!W->v[v].alive || !W->v[v].reflex || W->v[v].fresh) continue;
-                double best = INFINITY; wk_point bp; uint32_t ta = WK_NONE, tb = WK_NONE;
-                double save = W->t_now;
-                static double prev_t = 0;
-                W->t_now = prev_t > W->v[v].t0 ? prev_t : W->v[v].t0;
-                for (uint32_t a = W->v[v].next; a != v; a = W->v[a].next)
-                    wk_wavefront_split_test(W, v, a, &best, &bp, &ta, &tb);
-                W->t_now = save;
-                if (v + 1 == W->nv) prev_t = t;
-                if (best < t - 1e-6) {
-                    uint32_t si = v < A->cap_v ? A->seg_of[v] : WK_NONE;
-                    fprintf(stderr, "MISSED at t %.9g: v %u seg %u (F on %u->%u) should have hit %u->%u at %.9g\n", t, v, si, si != WK_NONE ? A->s[si].pa : 0, si != WK_NONE ? A->s[si].pb : 0, ta, tb, best);
-                    exit(1);
-                }
-            }
-        }
-    }
-#endif
     if (ensure_vertex_arrays(A, W->nv) != WK_OK) return R->err.code;
     /* segments of dead reflex vertices leave A(P) */
     for (uint32_t si = 0; si < A->n_s; si++) {
@@ -493,13 +467,6 @@ static double ar_next_time(void *ud) {
 /* Cut s' at lambda' (a crossing X): F' := X on piece a. */
 static wk_status cut(ar_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via) {
     ar_seg *T = &A->s[sj];
-#ifdef AR_DEBUG
-    if (getenv("AR_SEG") && sj == (uint32_t)atoi(getenv("AR_SEG")))
-        fprintf(stderr, "CUT seg %u at %.17g by seg %u onto %u->%u lam %.9g\n", sj, W->t_now, via, a, W->v[a].next, lam);
-#endif
-#ifdef AR_DEBUG
-    if (a == T->v || W->v[a].next == T->v) fprintf(stderr, "CUT onto own piece: seg %u v %u by seg %u (v %u) piece %u->%u at t %.17g lam %.9g lv %.9g lf %.9g\n", sj, T->v, via, A->s[via].v, a, W->v[a].next, W->t_now, lam, lambda_v(W, T, W->t_now), lambda_f(W, T, W->t_now));
-#endif
     unlink_f(A, sj);
     link_f(A, W, sj, a);
     /* F' must approach v' along s'.  At a corner of the wavefront (X at an
@@ -530,10 +497,6 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
     ** segment-piece incidences. */
     A->guard_n = t == A->guard_t ? A->guard_n + 1 : 0;
     A->guard_t = t;
-#ifdef AR_DEBUG
-    if (A->guard_n > 16 * ((uint64_t)A->n_s + W->nv) + 1000)
-        fprintf(stderr, "seg %u kind %d v %u pa %u pb %u xf %u %.17g xv %u %.17g lf %.17g lv %.17g\n", si, S->ev_kind, S->v, S->pa, S->pb, S->xf.other, S->xf.s, S->xv.other, S->xv.s, lambda_f(W, S, t), lambda_v(W, S, t));
-#endif
     if (A->guard_n > 16 * ((uint64_t)A->n_s + W->nv) + 1024)
         return WK_FAIL(R, WK_EALGO, W->P->name, 0, "arrangement: no progress at t = %.17g", t);
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
@@ -543,9 +506,6 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
         uint32_t old_pa = S->pa;
         uint32_t u = S->ev_end ? S->pb : S->pa; /* the vertex F passes */
         uint32_t a = S->ev_end ? S->pb : W->v[S->pa].prev;
-        double sa = 0, sb = 0;
-        (void)sa;
-        (void)sb;
         unlink_f(A, si);
         link_f(A, W, si, a);
         wk_notify_event(R, WK_EV_SWITCH, &ev);
@@ -564,19 +524,6 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
             if (A->s[si].pa == old_pa && A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t)
                 unlink_f(A, si);
         }
-#ifdef AR_DEBUG
-        if (getenv("AR_SEG") && si == (uint32_t)atoi(getenv("AR_SEG")))
-            fprintf(stderr, "SWITCH seg %u at %.17g over %u (reflex %d) -> piece %u->%u (own %d)\n", si, t, u, W->v[u].reflex, A->s[si].pa, A->s[si].pb, own);
-        if (A->guard_n > 16 * ((uint64_t)A->n_s + W->nv) + 1000) {
-            bool ae = false;
-            uint32_t h = shoot_at(W, &A->s[si], A->s[si].v, t, lambda_v(W, &A->s[si], t), &ae);
-            double later = t + 1e3 * W->eps_t;
-            bool ae2 = false;
-            uint32_t h2 = shoot_at(W, &A->s[si], A->s[si].v, later, lambda_v(W, &A->s[si], later), &ae2);
-            seg_event(A, W, si);
-            fprintf(stderr, "  switch sa %g sb %g u %u reflex %d -> a %u; after place pa %u; shot %u end %d, later %u end %d; ev %d %.17g\n", sa, sb, u, W->v[u].reflex, a, A->s[si].pa, h, ae, h2, ae2, A->s[si].ev_kind, A->s[si].ev_t);
-        }
-#endif
         S = &A->s[si];
         if (schedule_seg(A, W, si) != WK_OK) return R->err.code;
         return wk_wavefront_reschedule(W, S->v);
