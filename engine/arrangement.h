@@ -50,10 +50,9 @@
 ** 4. Invalidation, exactly where needed.  Insert: a cache loses its tail
 **    from the new segment's crossing onwards when that crossing falls inside
 **    its complete range (WK_C_INVALIDATE; dropped when nothing is left).
-**    Remove: the cache entry naming the removed segment is found by binary
-**    search (the crossing parameter depends only on the two segments'
-**    geometry, which never changes) and turned into a tombstone
-**    (WK_C_INVALIDATE).  Shrinking an active part only removes crossings, so
+**    Remove: O(1); entries of other caches that name the removed segment
+**    stay and are skipped when read (ids are never reused, so a removed id
+**    is always recognised).  Shrinking an active part only removes crossings, so
 **    caches are filtered when read (every returned entry is re-checked
 **    against both active parts); widening one is treated like an insert.
 **
@@ -307,8 +306,8 @@ wk_status wk_arrangement_insert(wk_run *R, wk_arrangement *A, wk_point a, wk_poi
 /* Insert the r segments of A(P) in order: ids first_id .. first_id + r - 1
 ** where first_id is the id count before the call. */
 wk_status wk_arrangement_insert_aseg(wk_run *R, wk_arrangement *A, const wk_aseg *segs, uint32_t r);
-/* Remove a current segment: frees its cache and tombstones the entries of
-** other caches that name it.  Counts WK_A_REMOVE.  WK_EALGO if id is not
+/* Remove a current segment: frees its cache; entries of other caches that
+** name it are skipped when read.  Counts WK_A_REMOVE.  WK_EALGO if id is not
 ** current (A unchanged).  Never allocates. */
 wk_status wk_arrangement_remove(wk_run *R, wk_arrangement *A, uint32_t id);
 /* Set the active part of a current segment (0 <= lo <= hi <= len, else
