@@ -103,6 +103,9 @@ static wk_status terminate(wk_wavefront *N, uint32_t v, uint32_t sk) {
     wk_wf_vertex *x = &N->v[v];
     x->alive = 0;
     wk_event_queue_remove(N->R, &N->Q, v);
+    if (wk_grow(N->R, (void **)&N->dead, &N->cap_dead, N->n_dead + 1, sizeof *N->dead) != WK_OK)
+        return N->R->err.code;
+    N->dead[N->n_dead++] = v;
     return add_arc(N, x->node, sk, x->ein, x->eout);
 }
 
@@ -903,6 +906,24 @@ static wk_status count_group(wk_wavefront *N, double t) {
 static wk_status refresh(wk_wavefront *N) {
     wk_run *R = N->R;
     N->stamp++;
+    if (N->finder->local_refresh) {
+        /* The finder keeps its split candidates current itself: only the
+        ** fresh vertices and the ones whose next changed need new
+        ** candidates, and a predecessor's edge event depends on its next. */
+        for (uint32_t i = 0; i < N->n_fresh; i++) {
+            uint32_t f = N->fresh[i];
+            if (!N->v[f].alive) continue;
+            uint32_t two[2] = {f, N->v[f].prev};
+            for (int j = 0; j < 2; j++) {
+                wk_wf_vertex *U = &N->v[two[j]];
+                if (U->seen == N->stamp) continue;
+                U->seen = N->stamp;
+                full_candidate(N, two[j]);
+                if (schedule(N, two[j]) != WK_OK) return R->err.code;
+            }
+        }
+        return WK_OK;
+    }
     for (uint32_t i = 0; i < N->n_fresh; i++) {
         uint32_t f = N->fresh[i];
         if (!N->v[f].alive || N->v[f].seen == N->stamp) continue;
@@ -926,15 +947,17 @@ static wk_status check_cycles_sane(wk_wavefront *N) {
     for (uint32_t i = 0; i < N->n_fresh; i++) {
         uint32_t f = N->fresh[i];
         if (!N->v[f].alive) continue;
+        /* a few steps around each fresh vertex: enough to see a cycle of
+        ** fewer than 3 vertices or a broken link next to the change */
         uint32_t len = 0, u = f;
         do {
             if (!N->v[u].alive || N->v[N->v[u].next].prev != u)
                 return WK_FAIL(N->R, WK_EALGO, N->P->name, 0,
                                "wavefront: broken wavefront cycle after t = %.17g", N->t_now);
             u = N->v[u].next;
-            if (++len > N->nv) break;
-        } while (u != f);
-        if (len < 3)
+            ++len;
+        } while (u != f && len < 3);
+        if (len < 3 && u == f)
             return WK_FAIL(N->R, WK_EALGO, N->P->name, 0,
                            "wavefront: wavefront cycle of %u vertices after t = %.17g", len, N->t_now);
     }
@@ -945,6 +968,7 @@ static wk_status process_group(wk_wavefront *N, double t) {
     wk_run *R = N->R;
     N->n_forced = 0;
     N->n_fresh = 0;
+    N->n_dead = 0;
     for (int round = 0;; round++) {
         bool again;
         for (uint32_t i = 0; i < N->n_sub; i++) N->sub[i].pair_in = N->sub[i].pair_out = WK_NONE;
@@ -982,6 +1006,7 @@ static wk_status simulate(wk_wavefront *N) {
     for (uint32_t i = 0; i < n; i++) link(N, i, (i + 1) % n);
     N->t_now = 0;
     N->n_fresh = 0;
+    N->n_dead = 0;
     for (uint32_t i = 0; i < n; i++) {
         if (N->v[i].vkind == WK_VEL_COLLINEAR && slide(N, i, 0.0) != WK_OK) return R->err.code;
         if (N->v[i].alive && N->v[i].vkind == WK_VEL_ANTIPARALLEL)
@@ -1082,6 +1107,7 @@ done:
     WK_FREE_ARRAY(R, N.cycflag, N.cap_cycflag);
     WK_FREE_ARRAY(R, N.run, N.cap_run);
     WK_FREE_ARRAY(R, N.run_node, N.cap_run_node);
+    WK_FREE_ARRAY(R, N.dead, N.cap_dead);
     if (st != WK_OK) {
         wk_skeleton_free(R, N.S);
         return st;

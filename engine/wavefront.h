@@ -87,6 +87,7 @@ struct wk_wavefront {
     wk_wf_pair *pair; uint32_t n_pair, cap_pair;
     uint32_t *slot; uint32_t n_slot, cap_slot;
     uint32_t *fresh; uint32_t n_fresh, cap_fresh;
+    uint32_t *dead; uint32_t n_dead, cap_dead; /* vertices ended in this group */
     uint8_t *cycflag; uint32_t n_cyc, cap_cycflag;
     uint32_t *run, *run_node; uint32_t n_run, cap_run, cap_run_node; /* collinear runs */
     const struct wk_split_finder *finder; /* how split events are found */
@@ -116,6 +117,8 @@ typedef struct wk_split_finder {
     wk_status (*after_group)(void *ud, wk_wavefront *W, double t);
     double (*next_time)(void *ud);
     wk_status (*process_next)(void *ud, wk_wavefront *W);
+    bool local_refresh; /* candidates need no walk over the touched cycles:
+                           the finder reschedules what it changes */
 } wk_split_finder;
 
 /* Run the simulation on P with the given finder; on success *out is the

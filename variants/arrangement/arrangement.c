@@ -62,6 +62,7 @@ typedef struct ar_seg {
     double ev_t;         /* its next event */
     uint8_t ev_kind;
     uint8_t ev_end;      /* switch: 0 F leaves over pa, 1 over pb */
+    uint32_t mark;       /* group stamp: already queued for placing */
 } ar_seg;
 
 typedef struct ar_state {
@@ -73,6 +74,9 @@ typedef struct ar_state {
     uint32_t *fhead;     /* per wavefront vertex a: first segment with F on a -> a.next */
     uint32_t cap_v;
     wk_event_queue Q;    /* segment events */
+    uint32_t *todo;      /* segments whose F must be placed again */
+    uint32_t n_todo, cap_todo, stamp;
+    uint32_t n_unknown;  /* segments whose F is unknown (pa == WK_NONE) */
     double guard_t;      /* time of the last finder event ... */
     uint64_t guard_n;    /* ... and how many happened at that time */
 } ar_state;
@@ -281,7 +285,10 @@ static wk_status place_f(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
     unlink_f(A, si);
     double lv = lambda_v(W, S, t);
     uint32_t a = shoot(W, S, S->v, t, lv);
-    if (a == WK_NONE) return WK_OK; /* F unknown: v's split is searched directly */
+    if (a == WK_NONE) { /* F unknown: v's split is searched directly */
+        A->n_unknown++;
+        return WK_OK;
+    }
     link_f(A, W, si, a);
     double lf = lambda_f(W, S, t);
     if (fetch_xf(A, si, isfinite(lf) ? lf : S->len, WK_NONE) != WK_OK) return A->R->err.code;
@@ -319,6 +326,7 @@ static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double
     A->n_s++;
     A->seg_of[v] = si;
     if (a != WK_NONE) link_f(A, W, si, a);
+    else A->n_unknown++;
     *out = si;
     return WK_OK;
 }
@@ -428,23 +436,53 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
     return st;
 }
 
+static wk_status queue_todo(ar_state *A, uint32_t si) {
+    if (A->s[si].mark == A->stamp || A->s[si].v == WK_NONE) return WK_OK;
+    A->s[si].mark = A->stamp;
+    if (WK_GROW(A->R, A->todo, A->cap_todo, A->n_todo + 1) != WK_OK) return A->R->err.code;
+    A->todo[A->n_todo++] = si;
+    return WK_OK;
+}
+
+/* After a group, only what the group touched: the vertices it ended and
+** the vertices whose next changed (W->dead, W->fresh). */
 static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
     ar_state *A = ud;
     wk_run *R = A->R;
     if (ensure_vertex_arrays(A, W->nv) != WK_OK) return R->err.code;
+    A->stamp++;
+    A->n_todo = 0;
+    /* pieces that ended or changed: their Fs are placed again */
+    for (int pass = 0; pass < 2; pass++) {
+        uint32_t n = pass ? W->n_fresh : W->n_dead;
+        const uint32_t *list = pass ? W->fresh : W->dead;
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t a = list[i];
+            if (a >= A->cap_v) continue;
+            for (uint32_t si = A->fhead[a]; si != WK_NONE; si = A->s[si].next_on)
+                if (queue_todo(A, si) != WK_OK) return R->err.code;
+        }
+    }
     /* segments of dead reflex vertices leave A(P) */
-    for (uint32_t si = 0; si < A->n_s; si++) {
-        ar_seg *S = &A->s[si];
-        if (S->v != WK_NONE && !W->v[S->v].alive && remove_segment(A, si) != WK_OK)
+    for (uint32_t i = 0; i < W->n_dead; i++) {
+        uint32_t d = W->dead[i];
+        if (d < A->cap_v && A->seg_of[d] != WK_NONE && remove_segment(A, A->seg_of[d]) != WK_OK)
             return R->err.code;
     }
-    /* Fs on pieces that changed are placed again */
-    for (uint32_t si = 0; si < A->n_s; si++) {
+    if (A->n_unknown) { /* rare: retry every F that is unknown */
+        A->n_unknown = 0;
+        for (uint32_t si = 0; si < A->n_s; si++)
+            if (A->s[si].v != WK_NONE && A->s[si].pa == WK_NONE && queue_todo(A, si) != WK_OK)
+                return R->err.code;
+    }
+    for (uint32_t i = 0; i < A->n_todo; i++) {
+        uint32_t si = A->todo[i];
         ar_seg *S = &A->s[si];
-        if (S->v == WK_NONE) continue;
-        if (S->pa == WK_NONE || !W->v[S->pa].alive || W->v[S->pa].next != S->pb) {
-            if (place_f(A, W, si, t) != WK_OK || schedule_seg(A, W, si) != WK_OK) return R->err.code;
-        }
+        if (S->v == WK_NONE || !W->v[S->v].alive) continue;
+        if (S->pa != WK_NONE && W->v[S->pa].alive && W->v[S->pa].next == S->pb) continue;
+        if (place_f(A, W, si, t) != WK_OK || schedule_seg(A, W, si) != WK_OK ||
+            wk_wavefront_reschedule(W, A->s[si].v) != WK_OK)
+            return R->err.code;
     }
     /* new reflex vertices get a segment */
     for (uint32_t i = 0; i < W->n_fresh; i++) {
@@ -452,7 +490,7 @@ static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
         if (!W->v[v].alive || !W->v[v].reflex || A->seg_of[v] != WK_NONE) continue;
         uint32_t si;
         if (create_segment(A, W, v, t, &si) != WK_OK || arm_segment(A, W, si) != WK_OK ||
-            notify_insert(A, W, si) != WK_OK)
+            notify_insert(A, W, si) != WK_OK || wk_wavefront_reschedule(W, v) != WK_OK)
             return R->err.code;
     }
     return WK_OK;
@@ -521,8 +559,10 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
             ** corner): F is left unknown, v's split is searched directly
             ** until the next group places F again.  Keeps progress. */
             seg_event(A, W, si);
-            if (A->s[si].pa == old_pa && A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t)
+            if (A->s[si].pa == old_pa && A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t) {
                 unlink_f(A, si);
+                A->n_unknown++;
+            }
         }
         S = &A->s[si];
         if (schedule_seg(A, W, si) != WK_OK) return R->err.code;
@@ -577,7 +617,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
 }
 
 static const wk_split_finder arrangement_finder = {
-    ar_full, ar_incremental, ar_start, ar_after_group, ar_next_time, ar_process_next,
+    ar_full, ar_incremental, ar_start, ar_after_group, ar_next_time, ar_process_next, true,
 };
 
 static wk_status arrangement_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
@@ -592,6 +632,7 @@ static wk_status arrangement_run(wk_run *R, const wk_polygon *P, wk_skeleton **o
     wk_arrangement_clear(R, &A.rev);
     wk_event_queue_clear(R, &A.Q);
     WK_FREE_ARRAY(R, A.s, A.cap_s);
+    WK_FREE_ARRAY(R, A.todo, A.cap_todo);
     if (A.cap_v) {
         WK_FREE_ARRAY(R, A.seg_of, A.cap_v);
         WK_FREE_ARRAY(R, A.fhead, A.cap_v);

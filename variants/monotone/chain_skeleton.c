@@ -107,7 +107,7 @@ static uint32_t new_trace(sim *S, uint32_t ein, uint32_t eout, wk_point p, doubl
     x->reflex = x->kind == WK_VEL_REGULAR && wk_is_reflex_turn(&L[ein], &L[eout]);
     wk_point q;
     if (x->kind == WK_VEL_REGULAR && t > 0 && wk_offset_lines_meet(&L[ein], &L[eout], t, &q) &&
-        dist2(q, p) <= S->M->eps_d * S->M->eps_d)
+        dist2(q, p) <= 1e6 * S->M->eps_d * S->M->eps_d) /* within 1e3 eps_d: see refine */
         x->p0 = q;
     return id;
 }
@@ -145,10 +145,14 @@ static void refine(const sim *S, const mono_trace *V, uint32_t e1, uint32_t e2, 
     wk_point q;
     double tq;
     if (!wk_three_lines_meet(&M->L[e1], &M->L[e2], &M->L[e3], &q, &tq)) return;
+    /* The kinematic estimate extrapolates positions since the vertex was
+    ** born, so its error grows with the vertex's speed and age (vertices
+    ** between nearly parallel edges are fast); the window grows alike. */
     double speed = fabs(V->vel.x) + fabs(V->vel.y);
-    if (fabs(tq - *t) > 16 * M->eps_t ||
-        dist2(q, *p) > 256 * M->eps_d * M->eps_d * (1 + speed * speed))
-        return;
+    double age = *t - V->t0 > 0 ? *t - V->t0 : 0;
+    double wt = 16 * M->eps_t + 1e-4 * age;
+    double wd = 16 * M->eps_d * (1 + speed) + 1e-4 * age * (1 + speed);
+    if (fabs(tq - *t) > wt || dist2(q, *p) > wd * wd) return;
     if (tq < S->t_now) tq = S->t_now;
     *t = tq;
     *p = q;
@@ -243,9 +247,14 @@ static wk_status resolve(sim *S, uint32_t node, uint32_t P, uint32_t Q, uint32_t
         } else { /* antiparallel: the nearer far end */
             double dP = P != WK_NONE ? dist2(wk_mono_trace_at(&C->v[P], t), at) : INFINITY;
             double dQ = Q != WK_NONE ? dist2(wk_mono_trace_at(&C->v[Q], t), at) : INFINITY;
-            if (!isfinite(dP) && !isfinite(dQ))
-                return WK_FAIL(R, WK_EALGO, M->P->name, 0,
-                               "monotone: two antiparallel rays meet in a chain at t = %.17g", t);
+            if (!isfinite(dP) && !isfinite(dQ)) {
+                /* the two end rays lie on each other and cancel entirely
+                ** (beyond the polygon: walls perpendicular to the sweep at
+                ** both ends); the chain's wavefront is gone */
+                wk_point u = {M->L[eout].ux, M->L[eout].uy};
+                if (new_flat(S, ein, eout, node, WK_NONE, u, t) == WK_NONE) return R->err.code;
+                return WK_OK;
+            }
             side = dQ <= dP ? +1 : -1;
         }
         u = side > 0 ? (wk_point){M->L[eout].ux, M->L[eout].uy}
@@ -264,7 +273,9 @@ static wk_status resolve(sim *S, uint32_t node, uint32_t P, uint32_t Q, uint32_t
             return WK_OK;
         }
         wk_point pf = wk_mono_trace_at(&C->v[f], t);
-        uint32_t nf = new_node(S, pf, t, WK_NONE);
+        /* a far vertex born at this instant is its own start node (an input
+        ** vertex at t = 0): reuse it, as naive does */
+        uint32_t nf = C->v[f].t0 == t ? C->v[f].start : new_node(S, pf, t, WK_NONE);
         if (nf == WK_NONE || new_flat(S, ein, eout, node, nf, u, t) == WK_NONE)
             return R->err.code;
         node = nf; /* the absorb step at the top lets f (and, if as far, the

@@ -35,7 +35,7 @@ static void naive_incremental(void *ud, wk_wavefront *W, uint32_t vi) {
     wk_wavefront_offer_split(W, vi, best, bp, ta, tb);
 }
 
-static const wk_split_finder brute_force = {naive_full, naive_incremental, NULL, NULL, NULL, NULL};
+static const wk_split_finder brute_force = {naive_full, naive_incremental, NULL, NULL, NULL, NULL, false};
 
 static wk_status naive_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
     return wk_wavefront_run(R, P, &brute_force, NULL, out);

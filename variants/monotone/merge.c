@@ -1,0 +1,301 @@
+/*
+** merge.c: the merge chain M' (001 sections 3-4), traced from v_w to v_e.
+**
+** M' is where the roofs of the two chains meet.  It starts at v_w in the
+** faces of the two edges at v_w; inside a pair of faces (upper edge eu,
+** lower edge eb) it runs along their weighted bisector
+**     tau_u(q) = tau_b(q),  tau_e(q) = (n_e . q - c_e) / w_e,
+** with the upper face on its left: heading east, or north / south along
+** the axis of two walls perpendicular to the sweep that face each other
+** from different chains (non-strict case: a bar of an H shape).  The next vertex is
+** the first point east where this ray leaves the upper or the lower face
+** through one of its walls (monotone_internal.h); crossing a trace moves to
+** the face on its other side.  The walk ends when the faces are those of the
+** two edges at v_e and v_e comes before any crossing.
+**
+** How the next exit is found (instead of 001's trapezoidations, see
+** README.md).  A face's slice at time tau is one segment between its walls;
+** along the ray tau is linear, so the ray leaves the face at the first level,
+** in the ray's direction of tau, where it passes a wall.  A wall is found at
+** the current level by binary search over its traces' start times and
+** walked in the ray's direction of tau until a crossing, or until its
+** levels lie beyond the best exit found so far.  A face's level is crossed
+** by M' at most twice inside the face (the final face's slice is one
+** segment), so the walking is linear overall and each step costs
+** O(log n) for the searches: O(n log n).
+**
+** Degenerate passes (M' through a chain node, or crossing both chains'
+** skeletons at one point) are taken one crossing at a time: crossings within
+** eps_d of the current merge node join it (no new node, no arc), and a
+** trace already crossed at this node is not crossed again.
+*/
+#include "monotone_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+/* At most this many crossings join one merge node: more means the walk is
+** circling (a can't-happen that is reported, never looped on). */
+#define CLUSTER_MAX 64
+
+typedef struct hit {
+    double lambda;      /* distance along the ray */
+    double mu;          /* distance along the trace from its start */
+    uint32_t chain, trace, face; /* face: the edge on the trace's other side */
+} hit;
+
+typedef struct walk {
+    mono *M;
+    wk_point p, dir;
+    uint32_t cur;       /* merge node at p */
+    uint32_t face[2];   /* current lower (0) and upper (1) face */
+    uint32_t excl_c[CLUSTER_MAX], excl_v[CLUSTER_MAX];
+    uint32_t n_excl;
+} walk;
+
+static double cross(wk_point a, wk_point b) { return a.x * b.y - a.y * b.x; }
+static double dot(wk_point a, wk_point b) { return a.x * b.x + a.y * b.y; }
+static wk_point sub(wk_point a, wk_point b) { return (wk_point){a.x - b.x, a.y - b.y}; }
+
+static double level(const wk_offset_line *L, wk_point q) {
+    return (L->nx * q.x + L->ny * q.y - L->c) / L->w;
+}
+
+/* Do the roof planes of edges a and b coincide (parallel, same side, equal
+** weights, same line)?  Then their "bisector" is a whole plane and M' follows
+** the wavefront vertex between them, which moves along their normal. */
+static bool coplanar(const mono *M, uint32_t a, uint32_t b) {
+    const wk_offset_line *A = &M->L[a], *B = &M->L[b];
+    double gx = A->nx / A->w - B->nx / B->w, gy = A->ny / A->w - B->ny / B->w;
+    if (fabs(gx) + fabs(gy) > 1e-12 * (1 / A->w + 1 / B->w)) return false;
+    return fabs(A->c / A->w - B->c / B->w) <= M->eps_t;
+}
+
+static bool excluded(const walk *W, uint32_t c, uint32_t v) {
+    for (uint32_t i = 0; i < W->n_excl; i++)
+        if (W->excl_c[i] == c && W->excl_v[i] == v) return true;
+    return false;
+}
+
+/* Does the ray leave face e through trace v (outward: left walls have the
+** face on their right, right walls on their left)?  Updates *best. */
+static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, uint32_t e,
+                       hit *best) {
+    const mono *M = W->M;
+    const mono_chain *C = &M->ch[c];
+    const mono_trace *T = &C->v[v];
+    if (excluded(W, c, v)) return;
+    wk_point A = C->node[T->start].p, D;
+    double len;
+    bool infinite = T->end == WK_NONE;
+    if (infinite) {
+        double s = hypot(T->vel.x, T->vel.y);
+        if (!(s > 0)) return;
+        D = (wk_point){T->vel.x / s, T->vel.y / s};
+        len = INFINITY;
+    } else {
+        D = sub(C->node[T->end].p, A);
+        len = hypot(D.x, D.y);
+        if (len <= M->eps_d) return; /* a point: its neighbours decide */
+        D.x /= len, D.y /= len;
+    }
+    double den = cross(D, W->dir);
+    wk_point Ap = sub(A, W->p);
+    if (fabs(den) <= 1e-14 && fabs(cross(D, Ap)) <= M->eps_d) {
+        /* The ray runs along this trace.  If the face beyond is coplanar with
+        ** the other chain's face, M' really continues between those two
+        ** (the trace is where that coincidence starts): cross here. */
+        uint32_t beyond = left_wall ? T->ein : T->eout;
+        if (!coplanar(M, beyond, W->face[1 - c])) return;
+        double mu = -dot(D, Ap), lambda = 0;
+        if (mu < -M->eps_d) { /* ahead of us: where the trace starts */
+            lambda = dot(Ap, W->dir);
+            mu = 0;
+        }
+        if (mu > len + M->eps_d || lambda < -M->eps_d) return;
+        if (mu > len) mu = len;
+        if (lambda < best->lambda) {
+            best->lambda = lambda < 0 ? 0 : lambda;
+            best->mu = mu;
+            best->chain = c;
+            best->trace = v;
+            best->face = beyond;
+        }
+        return;
+    }
+    if (left_wall ? den <= 1e-14 : den >= -1e-14) return; /* not outward */
+    double lambda = cross(D, Ap) / den;
+    double mu = cross(W->dir, Ap) / den;
+    if (lambda < -M->eps_d || mu < -M->eps_d || mu > len + M->eps_d) return;
+    if (lambda < 0) lambda = 0;
+    if (mu < 0) mu = 0;
+    if (mu > len) mu = len;
+    if (lambda < best->lambda) {
+        best->lambda = lambda;
+        best->mu = mu;
+        best->chain = c;
+        best->trace = v;
+        best->face = left_wall ? T->ein : T->eout;
+    }
+    (void)e;
+}
+
+/* Walk one wall of face e (trace ids w[0..k)) from the current level. */
+static void walk_wall(const walk *W, uint32_t c, const uint32_t *w, uint32_t k, bool left_wall,
+                      uint32_t e, double tau_p, double kappa, hit *best) {
+    const mono *M = W->M;
+    const mono_chain *C = &M->ch[c];
+    if (k == 0) return;
+    double tol = 1e3 * M->eps_t + 1e-12 * fabs(tau_p);
+    if (kappa >= 0) {
+        /* first trace whose end level reaches tau_p - tol */
+        uint32_t lo = 0, hi = k;
+        while (lo < hi) {
+            uint32_t mid = lo + (hi - lo) / 2;
+            if (C->v[w[mid]].t1 < tau_p - tol) lo = mid + 1;
+            else hi = mid;
+        }
+        for (uint32_t j = lo; j < k; j++) {
+            double lim = isfinite(best->lambda) ? tau_p + kappa * best->lambda : INFINITY;
+            if (kappa == 0) lim = tau_p;
+            if (C->v[w[j]].t0 > lim + tol) break;
+            test_trace(W, c, w[j], left_wall, e, best);
+        }
+    } else {
+        /* last trace whose start level is at most tau_p + tol */
+        uint32_t lo = 0, hi = k;
+        while (lo < hi) {
+            uint32_t mid = lo + (hi - lo) / 2;
+            if (C->v[w[mid]].t0 <= tau_p + tol) lo = mid + 1;
+            else hi = mid;
+        }
+        for (uint32_t j = lo; j-- > 0;) {
+            double lim = isfinite(best->lambda) ? tau_p + kappa * best->lambda : -INFINITY;
+            if (C->v[w[j]].t1 < lim - tol) break;
+            test_trace(W, c, w[j], left_wall, e, best);
+        }
+    }
+}
+
+static void walk_face(const walk *W, uint32_t c, uint32_t e, hit *best) {
+    const mono *M = W->M;
+    const mono_chain *C = &M->ch[c];
+    uint32_t k = wk_mono_chain_local(M, C, e);
+    const wk_offset_line *L = &M->L[e];
+    double tau_p = level(L, W->p), kappa = (L->nx * W->dir.x + L->ny * W->dir.y) / L->w;
+    walk_wall(W, c, C->lw + C->lw_start[k], C->lw_start[k + 1] - C->lw_start[k], true, e, tau_p,
+              kappa, best);
+    walk_wall(W, c, C->rw + C->rw_start[k], C->rw_start[k + 1] - C->rw_start[k], false, e, tau_p,
+              kappa, best);
+}
+
+static wk_status add_mnode(mono *M, wk_point p, double t, uint32_t sk, uint32_t *id) {
+    if (WK_GROW(M->R, M->mn, M->cap_mn, M->n_mn + 1) != WK_OK) return M->R->err.code;
+    memset(&M->mn[M->n_mn], 0, sizeof M->mn[0]);
+    M->mn[M->n_mn].p = p;
+    M->mn[M->n_mn].t = t;
+    M->mn[M->n_mn].sk = sk;
+    *id = M->n_mn++;
+    return WK_OK;
+}
+
+/* Arc of M' from merge node a to b (upper face left). */
+static wk_status add_marc(mono *M, uint32_t a, uint32_t b, uint32_t eu, uint32_t eb) {
+    if (WK_GROW(M->R, M->ma, M->cap_ma, M->n_ma + 1) != WK_OK) return M->R->err.code;
+    M->ma[M->n_ma++] = (mono_marc){a, b, eu, eb};
+    wk_point v = sub(M->mn[b].p, M->mn[a].p);
+    double l = hypot(v.x, v.y);
+    if (l > 0) v.x /= l, v.y /= l;
+    M->mn[a].out_dir = v;
+    M->mn[a].has_out = 1;
+    M->mn[b].in_dir = v;
+    M->mn[b].has_in = 1;
+    return WK_OK;
+}
+
+wk_status wk_mono_merge(mono *M) {
+    wk_run *R = M->R;
+    const wk_polygon *P = M->P;
+    uint32_t n = P->n;
+    walk W;
+    memset(&W, 0, sizeof W);
+    W.M = M;
+    uint32_t eu = (M->vw + n - 1) % n, eb = M->vw; /* the edges at v_w */
+    uint32_t eu_end = M->ve, eb_end = (M->ve + n - 1) % n;
+    if (add_mnode(M, P->p[M->vw], 0.0, M->vw, &W.cur) != WK_OK) return R->err.code;
+    W.p = P->p[M->vw];
+    uint64_t max_steps = 16 * (uint64_t)n + 64;
+    for (uint64_t step = 0; step < max_steps; step++) {
+        const wk_offset_line *Lu = &M->L[eu], *Lb = &M->L[eb];
+        wk_point g = {Lu->nx / Lu->w - Lb->nx / Lb->w, Lu->ny / Lu->w - Lb->ny / Lb->w};
+        wk_point dir = {-g.y, g.x};
+        double gl = hypot(dir.x, dir.y);
+        if (coplanar(M, eu, eb)) {
+            /* one plane: M' follows the vertex between them, along the normal */
+            dir = (wk_point){Lu->nx, Lu->ny};
+            if (dot(dir, M->d) < 0) dir.x = -dir.x, dir.y = -dir.y;
+            gl = 1;
+        } else if (!(gl > 1e-12 * (1 / Lu->w + 1 / Lb->w))) {
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "monotone: edges %u and %u have no bisector", eu, eb);
+        }
+        dir.x /= gl, dir.y /= gl;
+        /* dir = g rotated by +90 degrees keeps tau_u < tau_b (the upper
+        ** face) on the left: east when M' is strictly monotone, and the
+        ** right way along a wall pair perpendicular to the sweep (two walls
+        ** facing each other from different chains, non-strict case) */
+        if (dot(dir, M->d) < -1e-9)
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "monotone: the merge chain turns west between edges %u and %u", eu, eb);
+        W.dir = dir;
+        W.face[0] = eb;
+        W.face[1] = eu;
+        hit best = {INFINITY, 0, WK_NONE, WK_NONE, WK_NONE};
+        walk_face(&W, 1, eu, &best);
+        walk_face(&W, 0, eb, &best);
+        if (eu == eu_end && eb == eb_end) {
+            double lend = dot(sub(P->p[M->ve], W.p), dir);
+            if (lend <= best.lambda + M->eps_d) {
+                uint32_t m;
+                if (add_mnode(M, P->p[M->ve], 0.0, M->ve, &m) != WK_OK ||
+                    add_marc(M, W.cur, m, eu, eb) != WK_OK)
+                    return R->err.code;
+                return WK_OK;
+            }
+        }
+        if (best.chain == WK_NONE)
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "monotone: the merge chain leaves faces %u / %u nowhere (at %.17g, "
+                           "%.17g)",
+                           eu, eb, W.p.x, W.p.y);
+        /* the new merge vertex: where the offset lines of eu, eb and the
+        ** crossed trace's other edge meet, if that agrees with the ray */
+        wk_point X = {W.p.x + best.lambda * dir.x, W.p.y + best.lambda * dir.y};
+        double t = 0.5 * (level(Lu, X) + level(Lb, X));
+        wk_point q;
+        double tq;
+        if (wk_three_lines_meet(Lu, Lb, &M->L[best.face], &q, &tq) &&
+            hypot(q.x - X.x, q.y - X.y) <= 1e3 * M->eps_d && tq >= 0) {
+            X = q;
+            t = tq;
+        }
+        if (hypot(X.x - W.p.x, X.y - W.p.y) > M->eps_d) {
+            uint32_t m;
+            if (add_mnode(M, X, t, WK_NONE, &m) != WK_OK || add_marc(M, W.cur, m, eu, eb) != WK_OK)
+                return R->err.code;
+            W.cur = m;
+            W.p = X;
+            W.n_excl = 0;
+        }
+        if (W.n_excl == CLUSTER_MAX)
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "monotone: the merge chain circles at (%.17g, %.17g)", W.p.x, W.p.y);
+        W.excl_c[W.n_excl] = best.chain;
+        W.excl_v[W.n_excl++] = best.trace;
+        if (WK_GROW(R, M->cr, M->cap_cr, M->n_cr + 1) != WK_OK) return R->err.code;
+        M->cr[M->n_cr++] = (mono_cross){best.chain, best.trace, W.cur, best.mu};
+        if (best.chain == 1) eu = best.face;
+        else eb = best.face;
+    }
+    return WK_FAIL(R, WK_EALGO, P->name, 0, "monotone: the merge chain does not reach v_e");
+}
