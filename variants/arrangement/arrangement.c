@@ -150,25 +150,32 @@ static void link_f(ar_state *A, wk_wavefront *W, uint32_t si, uint32_t a) {
     A->fhead[a] = si;
 }
 
+/* Where the ray o + lambda u (lambda > lambda0) meets piece a -> a.next at
+** time t: lambda, or INFINITY; *mu: the position along the piece (0..1). */
+static double hit_piece(const wk_wavefront *W, const ar_seg *S, uint32_t a, double t,
+                        double lambda0, double *mu) {
+    uint32_t b = W->v[a].next;
+    wk_point pa = wk_wf_pos(&W->v[a], t), pb = wk_wf_pos(&W->v[b], t);
+    double dx = pb.x - pa.x, dy = pb.y - pa.y;
+    double den = S->u.x * dy - S->u.y * dx;
+    if (fabs(den) < 1e-300) return INFINITY;
+    double ex = pa.x - S->o.x, ey = pa.y - S->o.y;
+    double lam = (ex * dy - ey * dx) / den;
+    *mu = (ex * S->u.y - ey * S->u.x) / den;
+    if (*mu < -1e-12 || *mu > 1 + 1e-12 || lam <= lambda0 + W->eps_d * 1e-3) return INFINITY;
+    return lam;
+}
+
 /* The first piece of v's cycle that the ray o + lambda u (lambda >
 ** lambda0) meets at time t: a static ray shot, O(cycle).  *at_end is set
 ** when the hit is (within rounding) an end vertex of that piece. */
 static uint32_t shoot_at(const wk_wavefront *W, const ar_seg *S, uint32_t v, double t,
                          double lambda0, bool *at_end) {
     uint32_t best = WK_NONE;
-    double bl = INFINITY;
+    double bl = INFINITY, mu;
     for (uint32_t a = W->v[v].next; a != v; a = W->v[a].next) {
-        uint32_t b = W->v[a].next;
-        if (b == v) continue; /* v's own pieces */
-        wk_point pa = wk_wf_pos(&W->v[a], t), pb = wk_wf_pos(&W->v[b], t);
-        double dx = pb.x - pa.x, dy = pb.y - pa.y;
-        double den = S->u.x * dy - S->u.y * dx;
-        if (fabs(den) < 1e-300) continue;
-        double ex = pa.x - S->o.x, ey = pa.y - S->o.y;
-        double lam = (ex * dy - ey * dx) / den;     /* along the ray */
-        double mu = (ex * S->u.y - ey * S->u.x) / den; /* along the piece, 0..1 */
-        double tol = 1e-12;
-        if (mu < -tol || mu > 1 + tol || lam <= lambda0 + W->eps_d * 1e-3) continue;
+        if (W->v[a].next == v) continue; /* v's own pieces */
+        double lam = hit_piece(W, S, a, t, lambda0, &mu);
         if (lam < bl) {
             bl = lam;
             best = a;
@@ -436,6 +443,36 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
     return st;
 }
 
+/* F's piece was replaced by the group: the wavefront is continuous, so F
+** is now on one of the new pieces at (nearly) the same place on s, unless s
+** passes through the event's node (then F may jump: the caller shoots).
+** True if F was placed here (its next crossing is unchanged: same place). */
+static bool relocate_locally(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
+    ar_seg *S = &A->s[si];
+    double old = lambda_on_line(S, &W->L[W->v[S->pa].eout], t);
+    if (!isfinite(old)) return false;
+    double lv = lambda_v(W, S, t), best = INFINITY, mu;
+    uint32_t pick = WK_NONE;
+    for (uint32_t i = 0; i < W->n_fresh; i++) {
+        uint32_t g = W->fresh[i];
+        if (!W->v[g].alive) continue;
+        uint32_t two[2] = {g, W->v[g].prev};
+        for (int j = 0; j < 2; j++) {
+            uint32_t a = two[j];
+            if (a == S->v || W->v[a].next == S->v) continue;
+            double lam = hit_piece(W, S, a, t, lv, &mu);
+            if (lam < best && mu > 1e-9 && mu < 1 - 1e-9) {
+                best = lam;
+                pick = a;
+            }
+        }
+    }
+    if (pick == WK_NONE || !(fabs(best - old) <= 1e3 * W->eps_d)) return false;
+    unlink_f(A, si);
+    link_f(A, W, si, pick);
+    return true;
+}
+
 static wk_status queue_todo(ar_state *A, uint32_t si) {
     if (A->s[si].mark == A->stamp || A->s[si].v == WK_NONE) return WK_OK;
     A->s[si].mark = A->stamp;
@@ -480,6 +517,11 @@ static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
         ar_seg *S = &A->s[si];
         if (S->v == WK_NONE || !W->v[S->v].alive) continue;
         if (S->pa != WK_NONE && W->v[S->pa].alive && W->v[S->pa].next == S->pb) continue;
+        if (S->pa != WK_NONE && relocate_locally(A, W, si, t)) {
+            if (schedule_seg(A, W, si) != WK_OK || wk_wavefront_reschedule(W, A->s[si].v) != WK_OK)
+                return R->err.code;
+            continue;
+        }
         if (place_f(A, W, si, t) != WK_OK || schedule_seg(A, W, si) != WK_OK ||
             wk_wavefront_reschedule(W, A->s[si].v) != WK_OK)
             return R->err.code;
