@@ -304,7 +304,8 @@ static wk_status place_f(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
 
 /* A new segment for reflex vertex v from its position at time t to where
 ** its ray meets the wavefront; F placed, next crossings not yet fetched. */
-static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double t, uint32_t *out) {
+static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double t,
+                                const wk_ray_hit *hit, uint32_t *out) {
     wk_run *R = A->R;
     const wk_wf_vertex *V = &W->v[v];
     double sp = hypot(V->vel.x, V->vel.y);
@@ -318,7 +319,15 @@ static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double
     S->u = (wk_point){V->vel.x / sp, V->vel.y / sp};
     S->pa = S->pb = S->next_on = S->prev_on = WK_NONE;
     S->xf.other = S->xv.other = WK_NONE;
-    uint32_t a = shoot(W, S, v, t, 0);
+    /* At the start the grid ray shooter of engine/arrangement.c already
+    ** found the boundary edge hit; a hit on a vertex (a corner) is left to
+    ** the exact shot below.  Later segments shoot against their cycle. */
+    uint32_t a = WK_NONE;
+    if (hit && hit->edge != WK_NONE && hit->edge < W->nv && W->v[hit->edge].alive &&
+        W->v[hit->edge].t0 == 0 && W->v[hit->edge].eout == hit->edge)
+        a = hit->edge;
+    else
+        a = shoot(W, S, v, t, 0);
     double lf = a == WK_NONE ? NAN : lambda_on_line(S, &W->L[W->v[a].eout], t);
     S->len = isfinite(lf) && lf > 0 ? lf : 0;
     uint32_t id1, id2;
@@ -436,7 +445,7 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
     for (uint32_t i = 0; st == WK_OK && i < r; i++) {
         uint32_t v = segs[i].vertex, si;
         if (!W->v[v].alive || !W->v[v].reflex) continue; /* changed by the collinear rule */
-        st = create_segment(A, W, v, 0.0, &si);
+        st = create_segment(A, W, v, 0.0, &segs[i].hit, &si);
     }
     if (segs) WK_FREE_ARRAY(R, segs, r);
     for (uint32_t si = 0; st == WK_OK && si < A->n_s; si++) st = arm_segment(A, W, si);
@@ -531,7 +540,7 @@ static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
         uint32_t v = W->fresh[i];
         if (!W->v[v].alive || !W->v[v].reflex || A->seg_of[v] != WK_NONE) continue;
         uint32_t si;
-        if (create_segment(A, W, v, t, &si) != WK_OK || arm_segment(A, W, si) != WK_OK ||
+        if (create_segment(A, W, v, t, NULL, &si) != WK_OK || arm_segment(A, W, si) != WK_OK ||
             notify_insert(A, W, si) != WK_OK || wk_wavefront_reschedule(W, v) != WK_OK)
             return R->err.code;
     }
