@@ -21,6 +21,7 @@ bench: $(BENCH_DEPS)
 curves: $(BENCH_DEPS)
 	@mkdir -p results/curves/plots
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
+	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves_k.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
 	$(PY) scripts/fit.py results/curves/curves.csv --json results/curves/fit.json > results/curves/fit.txt && cat results/curves/fit.txt
 	$(PY) scripts/plot.py results/curves/curves.csv results/curves/plots
 	$(PY) scripts/report.py results/curves/curves.csv results/curves/plots results/curves/REPORT.md --fit results/curves/fit.txt
