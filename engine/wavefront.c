@@ -974,7 +974,7 @@ static wk_status process_group(wk_wavefront *N, double t) {
         for (uint32_t i = 0; i < N->n_sub; i++) N->sub[i].pair_in = N->sub[i].pair_out = WK_NONE;
         if (plan(N, t, &again) != WK_OK) return R->err.code;
         if (!again) break;
-        if (round > 64)
+        if (round > 64 + (int)N->n_comp)
             return WK_FAIL(R, WK_EALGO, N->P->name, 0, "wavefront: too many spikes at t = %.17g", t);
     }
     if (commit(N, t) != WK_OK || count_group(N, t) != WK_OK) return R->err.code;
