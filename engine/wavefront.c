@@ -283,6 +283,59 @@ static int cmp_pinch(const void *a, const void *b) {
 }
 
 /* Walk the cycles of the seeds (and forced vertices) into N->comp. */
+static wk_status push_local(wk_wavefront *N, uint32_t u) {
+    if (N->v[u].seen == N->stamp) return WK_OK;
+    N->v[u].seen = N->stamp;
+    N->v[u].at = WK_NONE;
+    N->v[u].cyc = 0;
+    return push_u32(N->R, &N->comp, &N->n_comp, &N->cap_comp, u);
+}
+
+/* A group of one event touches a handful of vertices, not its whole cycle:
+** the seed, the target piece of a split, and LOCAL_REACH neighbours on each
+** side of them.  Walking the whole cycle for each event made a big convex
+** wavefront quadratic (a 100,000-gon: 10^10 steps).  Groups of several
+** events, or with forced vertices, are degenerate and walk whole cycles. */
+#define LOCAL_REACH 3
+static wk_status collect_local(wk_wavefront *N, bool *closed) {
+    N->stamp++;
+    N->n_comp = 0;
+    N->n_cyc = 1;
+    const wk_wf_vertex *S = &N->v[N->seeds[0]];
+    uint32_t centres[3] = {N->seeds[0], WK_NONE, WK_NONE};
+    if (S->ev_kind == WK_WF_SPLIT) {
+        centres[1] = S->ev_a;
+        centres[2] = S->ev_b;
+    }
+    /* closed: the walk from the seed went round its whole cycle */
+    *closed = false;
+    uint32_t u = N->seeds[0];
+    for (int k = 0; k <= 2 * LOCAL_REACH + 1; k++) {
+        u = N->v[u].next;
+        if (u == N->seeds[0]) {
+            *closed = true;
+            break;
+        }
+    }
+    for (int c = 0; c < 3; c++) {
+        if (centres[c] == WK_NONE || !N->v[centres[c]].alive) continue;
+        uint32_t a = centres[c], b = centres[c];
+        if (push_local(N, a) != WK_OK) return N->R->err.code;
+        for (int k = 0; k < LOCAL_REACH; k++) {
+            a = N->v[a].prev;
+            b = N->v[b].next;
+            if (push_local(N, a) != WK_OK || push_local(N, b) != WK_OK) return N->R->err.code;
+        }
+    }
+    /* the vertices just outside take part as untouched ends of pieces */
+    for (uint32_t i = 0, n = N->n_comp; i < n; i++) {
+        uint32_t c = N->comp[i];
+        if (N->v[N->v[c].next].seen != N->stamp) N->v[N->v[c].next].at = WK_NONE;
+        if (N->v[N->v[c].prev].seen != N->stamp) N->v[N->v[c].prev].at = WK_NONE;
+    }
+    return WK_OK;
+}
+
 static wk_status collect_cycles(wk_wavefront *N) {
     N->stamp++;
     N->n_comp = 0;
@@ -367,7 +420,14 @@ static wk_status plan(wk_wavefront *N, double t, bool *again) {
         uint32_t k;
         if (add_cluster(N, wk_wf_pos(&N->v[N->forced[i]], t), &k) != WK_OK) return R->err.code;
     }
-    if (collect_cycles(N) != WK_OK) return R->err.code;
+    N->local_open = false;
+    if (N->n_seeds == 1 && N->n_forced == 0) {
+        bool closed;
+        if (collect_local(N, &closed) != WK_OK) return R->err.code;
+        N->local_open = !closed;
+    } else if (collect_cycles(N) != WK_OK) {
+        return R->err.code;
+    }
     /* arrivals */
     for (uint32_t i = 0; i < N->n_comp; i++) {
         wk_wf_vertex *u = &N->v[N->comp[i]];
@@ -879,6 +939,7 @@ static wk_status count_group(wk_wavefront *N, double t) {
     ** none of its nodes starts a new vertex (flag 1: alive) */
     if (wk_grow(R, (void **)&N->cycflag, &N->cap_cycflag, N->n_cyc + 1, 1) != WK_OK) return R->err.code;
     memset(N->cycflag, 0, N->n_cyc);
+    if (N->local_open) N->cycflag[0] = 1; /* only part of its cycle was looked at */
     for (uint32_t i = 0; i < N->n_comp; i++) {
         const wk_wf_vertex *u = &N->v[N->comp[i]];
         if (u->at == WK_NONE || N->cl[u->at].pairs) N->cycflag[u->cyc] = 1;
