@@ -48,13 +48,6 @@ static const char *describe(char *buf, size_t size, const char *what, const long
 
 /* ---- exact point helpers ---- */
 
-static int lex_cmp(wk_point p, wk_point q) {
-    if (p.x < q.x) return -1;
-    if (p.x > q.x) return 1;
-    if (p.y < q.y) return -1;
-    if (p.y > q.y) return 1;
-    return 0;
-}
 
 static bool same_point(wk_point p, wk_point q) { return p.x == q.x && p.y == q.y; }
 
@@ -67,7 +60,7 @@ static uint32_t prev_of(uint32_t i, uint32_t n) { return i == 0 ? n - 1 : i - 1;
 ** O(n log n) worst case, deterministic. */
 
 static bool vertex_less(const wk_point *p, uint32_t a, uint32_t b) {
-    int c = lex_cmp(p[a], p[b]);
+    int c = wk_point_lex_cmp(p[a], p[b]);
     return c != 0 ? c < 0 : a < b;
 }
 
@@ -141,11 +134,11 @@ static uint64_t edge_priority(uint32_t e) {
 /* Vertex id of the left (lexicographically smaller) endpoint of edge e. */
 static uint32_t left_vertex(const sweep *S, uint32_t e) {
     uint32_t f = next_of(e, S->n);
-    return lex_cmp(S->p[e], S->p[f]) < 0 ? e : f;
+    return wk_point_lex_cmp(S->p[e], S->p[f]) < 0 ? e : f;
 }
 static uint32_t right_vertex(const sweep *S, uint32_t e) {
     uint32_t f = next_of(e, S->n);
-    return lex_cmp(S->p[e], S->p[f]) < 0 ? f : e;
+    return wk_point_lex_cmp(S->p[e], S->p[f]) < 0 ? f : e;
 }
 
 static bool adjacent_edges(uint32_t a, uint32_t b, uint32_t n) {
@@ -414,7 +407,7 @@ static wk_status check_local(wk_run *R, const wk_point *p, uint32_t n, const cha
         if (wk_orient2d(p[u], p[v], p[w], NULL) != 0) continue;
         /* Collinear: straight on (valid) if u and w lie on opposite sides of
         ** v, a spike if on the same side.  Exact: only comparisons. */
-        if ((lex_cmp(p[u], p[v]) < 0) != (lex_cmp(p[w], p[v]) < 0)) continue;
+        if ((wk_point_lex_cmp(p[u], p[v]) < 0) != (wk_point_lex_cmp(p[w], p[v]) < 0)) continue;
         return WK_FAIL(R, WK_EINPUT, name, line_of(lines, v),
                        "%s and %s fold back on each other at vertex %u (0-degree spike)",
                        describe(da, sizeof da, "edge", lines, u),
@@ -471,7 +464,7 @@ done:
 static int orientation(const wk_point *p, uint32_t n) {
     uint32_t m = 0;
     for (uint32_t i = 1; i < n; i++)
-        if (lex_cmp(p[i], p[m]) < 0) m = i;
+        if (wk_point_lex_cmp(p[i], p[m]) < 0) m = i;
     return wk_orient2d(p[prev_of(m, n)], p[m], p[next_of(m, n)], NULL);
 }
 

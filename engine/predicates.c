@@ -201,8 +201,7 @@ double wk_shoelace_exact(const wk_point *p, uint32_t n) {
 
 /* ---- segments ---- */
 
-/* Lexicographic order on (x, y); exact (no arithmetic). */
-static int lex_cmp(wk_point p, wk_point q) {
+int wk_point_lex_cmp(wk_point p, wk_point q) {
     if (p.x < q.x) return -1;
     if (p.x > q.x) return 1;
     if (p.y < q.y) return -1;
@@ -213,12 +212,12 @@ static int lex_cmp(wk_point p, wk_point q) {
 /* For p collinear with segment [a, b]: p lies on the closed segment iff it
 ** lies between the endpoints in lexicographic order. */
 static bool between(wk_point a, wk_point b, wk_point p) {
-    if (lex_cmp(a, b) > 0) {
+    if (wk_point_lex_cmp(a, b) > 0) {
         wk_point t = a;
         a = b;
         b = t;
     }
-    return lex_cmp(a, p) <= 0 && lex_cmp(p, b) <= 0;
+    return wk_point_lex_cmp(a, p) <= 0 && wk_point_lex_cmp(p, b) <= 0;
 }
 
 wk_seg_meet wk_segments_meet(wk_point a, wk_point b, wk_point c, wk_point d) {
@@ -230,13 +229,13 @@ wk_seg_meet wk_segments_meet(wk_point a, wk_point b, wk_point c, wk_point d) {
         /* All four points on one line (or degenerate segments): compare the
         ** lexicographic extents. */
         wk_point s0 = a, s1 = b, t0 = c, t1 = d;
-        if (lex_cmp(s0, s1) > 0) { wk_point t = s0; s0 = s1; s1 = t; }
-        if (lex_cmp(t0, t1) > 0) { wk_point t = t0; t0 = t1; t1 = t; }
-        if (lex_cmp(s1, t0) < 0 || lex_cmp(t1, s0) < 0) return WK_SEG_DISJOINT;
+        if (wk_point_lex_cmp(s0, s1) > 0) { wk_point t = s0; s0 = s1; s1 = t; }
+        if (wk_point_lex_cmp(t0, t1) > 0) { wk_point t = t0; t0 = t1; t1 = t; }
+        if (wk_point_lex_cmp(s1, t0) < 0 || wk_point_lex_cmp(t1, s0) < 0) return WK_SEG_DISJOINT;
         /* They meet in a single point when one ends where the other starts
         ** or when one of them is a point; else in a segment. */
-        if (lex_cmp(s1, t0) == 0 || lex_cmp(t1, s0) == 0 || lex_cmp(s0, s1) == 0 ||
-            lex_cmp(t0, t1) == 0)
+        if (wk_point_lex_cmp(s1, t0) == 0 || wk_point_lex_cmp(t1, s0) == 0 || wk_point_lex_cmp(s0, s1) == 0 ||
+            wk_point_lex_cmp(t0, t1) == 0)
             return WK_SEG_TOUCH;
         return WK_SEG_OVERLAP;
     }

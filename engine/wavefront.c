@@ -204,6 +204,15 @@ static void full_candidate(wk_wavefront *N, uint32_t vi) {
     if (V->reflex) N->finder->full(N->finder_ud, N, vi);
 }
 
+void wk_wavefront_split_scan(wk_wavefront *N, uint32_t vi) {
+    double best = N->v[vi].ev_t;
+    wk_point bp = N->v[vi].ev_p;
+    uint32_t ta = WK_NONE, tb = WK_NONE;
+    for (uint32_t a = N->v[vi].next; a != vi; a = N->v[a].next)
+        wk_wavefront_split_test(N, vi, a, &best, &bp, &ta, &tb);
+    wk_wavefront_offer_split(N, vi, best, bp, ta, tb);
+}
+
 void wk_wavefront_offer_split(wk_wavefront *N, uint32_t vi, double t, wk_point p, uint32_t a,
                               uint32_t b) {
     wk_wf_vertex *V = &N->v[vi];

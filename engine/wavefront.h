@@ -137,6 +137,8 @@ static inline wk_point wk_wf_pos(const wk_wf_vertex *v, double t) {
 ** *best?  If so, *best, *bp and the target (*ta, *tb) are updated. */
 void wk_wavefront_split_test(wk_wavefront *W, uint32_t vi, uint32_t a, double *best,
                              wk_point *bp, uint32_t *ta, uint32_t *tb);
+/* The brute-force split search: vi against every piece of its cycle, O(cycle). */
+void wk_wavefront_split_scan(wk_wavefront *W, uint32_t vi);
 /* Offer vi a split with piece a -> b at time t and point p; kept if earlier
 ** than its current candidate. */
 void wk_wavefront_offer_split(wk_wavefront *W, uint32_t vi, double t, wk_point p, uint32_t a,

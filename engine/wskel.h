@@ -288,6 +288,8 @@ bool wk_polygon_is_reflex(const wk_polygon *P, uint32_t i);
 ** -1 right turn, 0 collinear.  Exact (float filter, expansion fallback).
 ** *exact_used (may be NULL) is set to true when the exact stage ran. */
 int wk_orient2d(wk_point a, wk_point b, wk_point c, bool *exact_used);
+/* Lexicographic order on (x, y): -1, 0, +1; exact (no arithmetic). */
+int wk_point_lex_cmp(wk_point p, wk_point q);
 /* Unfiltered double evaluation, for benchmarks and tests only. */
 int wk_orient2d_fast(wk_point a, wk_point b, wk_point c);
 

@@ -397,14 +397,7 @@ static wk_status remove_segment(ar_state *A, uint32_t si) {
 /* Defensive fallback: v's first hit over its whole cycle, for the rare
 ** reflex vertex whose F is unknown (its ray met no piece: a vanishing
 ** cycle, or a ray through a vertex that stays ambiguous). */
-static void brute_split(wk_wavefront *W, uint32_t v) {
-    double best = W->v[v].ev_t;
-    wk_point bp = W->v[v].ev_p;
-    uint32_t ta = WK_NONE, tb = WK_NONE;
-    for (uint32_t a = W->v[v].next; a != v; a = W->v[a].next)
-        wk_wavefront_split_test(W, v, a, &best, &bp, &ta, &tb);
-    wk_wavefront_offer_split(W, v, best, bp, ta, tb);
-}
+static void brute_split(wk_wavefront *W, uint32_t v) { wk_wavefront_split_scan(W, v); }
 
 /* v's split: v meets F along its segment. */
 static void ar_full(void *ud, wk_wavefront *W, uint32_t v) {

@@ -12,12 +12,7 @@
 /* Every piece of vi's cycle. */
 static void naive_full(void *ud, wk_wavefront *W, uint32_t vi) {
     (void)ud;
-    double best = W->v[vi].ev_t;
-    wk_point bp = W->v[vi].ev_p;
-    uint32_t ta = WK_NONE, tb = WK_NONE;
-    for (uint32_t a = W->v[vi].next; a != vi; a = W->v[a].next)
-        wk_wavefront_split_test(W, vi, a, &best, &bp, &ta, &tb);
-    wk_wavefront_offer_split(W, vi, best, bp, ta, tb);
+    wk_wavefront_split_scan(W, vi);
 }
 
 /* Only pieces next to fresh vertices are new. */
