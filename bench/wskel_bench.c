@@ -56,7 +56,7 @@
 
 #define EXIT_USAGE 64
 #define MAX_LIST 256
-#define K_NA (UINT32_MAX - 1) /* variant without a k: the k column is empty */
+#define K_NA WK_NONE /* variant without a k: the k column is empty (WK_K_MAX is "max") */
 
 /* ------------------------------------------------------------ options */
 
@@ -376,7 +376,7 @@ static int expand_k(const str_list *ks, int64_t r, uint64_t n, uint32_t *out) {
             for (uint64_t k = 1; k <= top && c < MAX_LIST; k *= 2) out[c++] = (uint32_t)k;
         } else {
             uint64_t k = parse_u64("k", s);
-            if (k < 1 || k >= K_NA) die_usage("--k: %s out of range", s);
+            if (k < 1 || k >= WK_K_MAX) die_usage("--k: %s out of range", s);
             out[c++] = (uint32_t)k;
         }
         if (c >= MAX_LIST - 1) break;
