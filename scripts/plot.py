@@ -135,12 +135,15 @@ def k_groups(rows):
         if r["k"] != "":
             groups[(r["variant"], r["family"], r["n"], r["r_req"], r["weights"])].append(r)
     out = {g: rs for g, rs in groups.items() if len({r["k"] for r in rs}) >= 2}
-    # Keep the largest n per (variant, family, r_req, weights): the clearest curve.
+    # Keep one n per (variant, family, r_req, weights): the one with the most
+    # k values (a k sweep beats a k = 1 / max pair), then the largest n.
     best = {}
     for g in out:
         key = (g[0], g[1], g[3], g[4])
-        if key not in best or g[2] > best[key][2]:
-            best[key] = g
+        score = (len({r["k"] for r in out[g]}), g[2])
+        if key not in best or score > best[key][0]:
+            best[key] = (score, g)
+    best = {key: g for key, (score, g) in best.items()}
     return {g: out[g] for g in sorted(best.values())}
 
 
