@@ -33,12 +33,19 @@
 ** same segments, one oriented from v's end (front events walk it forward),
 ** one from the far end (F walks it forward).
 **
-** After every group of wavefront events: segments of dead reflex vertices
-** are removed; new reflex vertices get a segment (a ray against their
-** wavefront cycle, O(n), 000's O(n) insertion); an F whose piece changed is
-** placed again by the same ray shot.  Counts: switch and start events,
-** arrangement inserts/removes, queries, scanned segments, cache hits,
-** misses, refills and invalidations, the initial crossings of A(P).
+** After every group of wavefront events only what the group touched is
+** revisited (W->dead, W->fresh): segments of dead reflex vertices are
+** removed; new reflex vertices get a segment (a ray against their wavefront
+** cycle, O(n), 000's O(n) insertion); an F whose piece changed is put on the
+** new piece at the same place on s (the wavefront moves continuously), or,
+** where s passes through the event's node, placed by a ray shot.  A ray
+** that meets a wavefront corner ambiguously leaves F unknown: that vertex's
+** split is then searched directly (brute force) until the next group places
+** F again; a defensive path, kept so that no split is ever missed.
+** Counts: switch events; start events (front events are counted with them:
+** both are a unswept segment reaching a resting crossing); arrangement
+** inserts/removes, queries, scanned segments, cache hits, misses, refills and
+** invalidations, the initial crossings of A(P).
 */
 #include "../variant.h"
 #include "arrangement.h"
