@@ -16,8 +16,6 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 static const char usage_text[] =
     "usage: wskel-gen FAMILY --n N [options]\n"
@@ -156,16 +154,9 @@ int main(int argc, char **argv) {
     if (!wk_gen_family_summary(g.family))
         return usage_error("unknown family '%s' (see --list)", g.family);
     if (!have_n) return usage_error("%s", "--n is required");
-    struct stat sb; /* a device or FIFO is written in place (see the top) */
-    bool atomic = outpath && !(stat(outpath, &sb) == 0 && !S_ISREG(sb.st_mode));
-    char tmp[4096];
-    if (atomic &&
-        (size_t)snprintf(tmp, sizeof tmp, "%s.tmp.%ld", outpath, (long)getpid()) >= sizeof tmp)
-        return usage_error("output path too long ('%s')", outpath);
-
     int rc = 0;
     wk_polygon *P = NULL;
-    FILE *out = NULL;
+    wk_output out = {NULL, NULL, false, ""};
     if (wk_generate(&R, &g, &P) != WK_OK) {
         rc = report(&R);
         goto done;
@@ -176,40 +167,22 @@ int main(int argc, char **argv) {
     snprintf(header, sizeof header, "wskel-gen %d: family=%s n=%u r=%u seed=%llu weights=%s",
              WK_GEN_VERSION, g.family, P->n, P->r, (unsigned long long)g.seed, wtext);
 
-    if (outpath) {
-        out = fopen(atomic ? tmp : outpath, "w");
-        if (!out) {
-            WK_FAIL(&R, WK_EALGO, outpath, 0, "cannot write: %s", strerror(errno));
-            rc = report(&R);
-            goto done;
-        }
-    } else {
-        out = stdout;
+    if (wk_output_open(&R, &out, outpath) != WK_OK) {
+        rc = report(&R);
+        goto done;
     }
     wk_status st = WK_OK;
     if (!strcmp(format, "graphml")) {
-        write_graphml(out, P, header);
+        write_graphml(out.f, P, header);
     } else {
-        fprintf(out, "# %s\n", header);
-        st = wk_polygon_write_wpoly(&R, out, P);
+        fprintf(out.f, "# %s\n", header);
+        st = wk_polygon_write_wpoly(&R, out.f, P);
     }
-    if (st == WK_OK && (fflush(out) != 0 || ferror(out)))
-        st = WK_FAIL(&R, WK_EALGO, outpath ? outpath : "stdout", 0, "write failed: %s",
-                     strerror(errno));
-    if (out != stdout) {
-        if (fclose(out) != 0 && st == WK_OK)
-            st = WK_FAIL(&R, WK_EALGO, outpath, 0, "write failed: %s", strerror(errno));
-        out = NULL;
-        if (atomic) {
-            if (st == WK_OK && rename(tmp, outpath) != 0)
-                st = WK_FAIL(&R, WK_EALGO, outpath, 0, "cannot rename output: %s",
-                             strerror(errno));
-            if (st != WK_OK) remove(tmp);
-        }
-    }
+    st = wk_output_close(&R, &out, st);
     if (st != WK_OK) rc = report(&R);
 
 done:
+    wk_output_close(&R, &out, WK_EALGO); /* no-op unless a failure left it open */
     wk_polygon_free(&R, P);
     size_t left = wk_run_close(&R);
     if (left != 0 && rc == 0) {

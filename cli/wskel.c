@@ -13,8 +13,6 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 static const char usage_text[] =
     "usage: wskel [options] INPUT\n"
@@ -179,8 +177,7 @@ int main(int argc, char **argv) {
     int rc = 0;
     wk_polygon *P = NULL;
     wk_skeleton *S = NULL;
-    FILE *out = NULL;
-    char *tmp = NULL;
+    wk_output out = {NULL, NULL, false, ""};
     double time_s = 0;
     size_t peak = 0;
 
@@ -213,51 +210,19 @@ int main(int argc, char **argv) {
                     rep.nodes, rep.arcs, rep.max_distance_error, rep.area_error);
     }
 
-    if (outpath) {
-        struct stat sb; /* a device or FIFO is written in place (see the top) */
-        bool atomic = !(stat(outpath, &sb) == 0 && !S_ISREG(sb.st_mode));
-        if (atomic) {
-            size_t len = strlen(outpath) + 32;
-            tmp = malloc(len);
-            if (!tmp) {
-                WK_FAIL(&R, WK_ENOMEM, NULL, 0, "out of memory");
-                rc = report(&R);
-                goto done;
-            }
-            snprintf(tmp, len, "%s.tmp.%ld", outpath, (long)getpid());
-        }
-        out = fopen(atomic ? tmp : outpath, "w");
-        if (!out) {
-            /* not an input problem: exit 2, as wskel-gen does */
-            WK_FAIL(&R, WK_EALGO, outpath, 0, "cannot write: %s", strerror(errno));
-            rc = report(&R);
-            goto done;
-        }
-    } else {
-        out = stdout;
+    if (wk_output_open(&R, &out, outpath) != WK_OK) {
+        rc = report(&R);
+        goto done;
     }
     wk_run_info info = {V->name, (V->flags & WK_VARIANT_USES_K) ? k : WK_NONE, time_s, peak,
                         &R.counters};
     wk_status st;
-    if (!strcmp(format, "json")) st = wk_write_json(&R, out, P, S, &info);
-    else if (!strcmp(format, "text")) st = wk_write_text(&R, out, P, S);
-    else if (!strcmp(format, "svg")) st = wk_write_svg(&R, out, P, S, offsets, n_offsets);
-    else if (!strcmp(format, "obj")) st = wk_write_obj(&R, out, P, S);
-    else st = wk_write_vtp(&R, out, P, S);
-    if (st == WK_OK && fflush(out) != 0)
-        st = WK_FAIL(&R, WK_EALGO, outpath ? outpath : "stdout", 0, "write failed: %s",
-                     strerror(errno));
-    if (out != stdout) {
-        if (fclose(out) != 0 && st == WK_OK)
-            st = WK_FAIL(&R, WK_EALGO, outpath, 0, "write failed: %s", strerror(errno));
-        out = NULL;
-        if (tmp) { /* atomic: tmp is set only then */
-            if (st == WK_OK && rename(tmp, outpath) != 0)
-                st = WK_FAIL(&R, WK_EALGO, outpath, 0, "cannot rename output: %s",
-                             strerror(errno));
-            if (st != WK_OK) remove(tmp);
-        }
-    }
+    if (!strcmp(format, "json")) st = wk_write_json(&R, out.f, P, S, &info);
+    else if (!strcmp(format, "text")) st = wk_write_text(&R, out.f, P, S);
+    else if (!strcmp(format, "svg")) st = wk_write_svg(&R, out.f, P, S, offsets, n_offsets);
+    else if (!strcmp(format, "obj")) st = wk_write_obj(&R, out.f, P, S);
+    else st = wk_write_vtp(&R, out.f, P, S);
+    st = wk_output_close(&R, &out, st);
     if (st != WK_OK) {
         rc = report(&R);
         goto done;
@@ -273,11 +238,7 @@ int main(int argc, char **argv) {
     }
 
 done:
-    if (out && out != stdout) {
-        fclose(out);
-        if (tmp) remove(tmp);
-    }
-    free(tmp);
+    wk_output_close(&R, &out, WK_EALGO); /* no-op unless a failure left it open */
     free(offsets);
     wk_skeleton_free(&R, S);
     wk_polygon_free(&R, P);

@@ -389,6 +389,19 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
 wk_status wk_write_obj(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
 wk_status wk_write_vtp(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
 
+/* An output file that appears whole or not at all (see engine/output.c):
+** open with a path (NULL: stdout), write to o.f, then close with the status
+** of the writing; on failure the partial file is removed.  close returns
+** the final status (a flush, close or rename failure is WK_EALGO). */
+typedef struct wk_output {
+    FILE *f;
+    const char *path;
+    bool atomic;        /* written to tmp and renamed */
+    char tmp[4096];
+} wk_output;
+wk_status wk_output_open(wk_run *R, wk_output *o, const char *path);
+wk_status wk_output_close(wk_run *R, wk_output *o, wk_status st);
+
 /* Faces: the boundary of edge e's face as a node cycle starting with the
 ** edge's two vertices (e, e+1, ..., back).  Used by the validator and the
 ** roof writers.  *cycle is allocated through R (free with WK_FREE_ARRAY
