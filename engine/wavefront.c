@@ -567,6 +567,26 @@ static wk_status plan(wk_wavefront *N, double t, bool *again) {
             }
         }
     }
+    /* An untouched vertex whose pieces both lead to the same node closes a
+    ** triangle of no area with it (its two edges lie on one line there): it
+    ** arrives too.  Plan again with it as a node. */
+    bool forced_tri = false;
+    for (uint32_t i = 0; i < N->n_sub; i++) {
+        const wk_wf_sub *x = &N->sub[i];
+        if (x->dead || !IS_NODE(x->from) || IS_NODE(x->to)) continue;
+        for (uint32_t j = 0; j < N->n_sub; j++) {
+            const wk_wf_sub *y = &N->sub[j];
+            if (y->dead || y->from != x->to || y->to != x->from) continue;
+            if (push_u32(R, &N->forced, &N->n_forced, &N->cap_forced, x->to) != WK_OK)
+                return R->err.code;
+            forced_tri = true;
+            break;
+        }
+    }
+    if (forced_tri) {
+        *again = true;
+        return WK_OK;
+    }
     /* A sub-piece between two nodes is where parallel edges met; an
     ** untouched vertex lying on it (an end of a collinear step of the other
     ** side) meets it too: make it a node and plan again. */
