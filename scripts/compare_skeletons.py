@@ -391,6 +391,9 @@ def compare(a, b, tol=None):
 # ------------------------------------------------------------------- CLI
 
 def main(argv=None):
+    # `... | head` closes the pipe early: end quietly like other filters.
+    import signal
+    signal.signal(signal.SIGPIPE, signal.SIG_DFL)
     ap = argparse.ArgumentParser(
         description="Compare two wskel-1 skeletons of one polygon, arc for arc.")
     ap.add_argument("a", metavar="A.json")
