@@ -24,7 +24,7 @@ B  := build
 BA := build-asan
 LIB     := $(B)/libwskel.a
 LIBASAN := $(BA)/libwskel.a
-HDRS := $(wildcard engine/*.h variants/*.h variants/*/*.h bench/*.h)
+HDRS := $(wildcard engine/*.h variants/*.h variants/*/*.h bench/*.h tests/*.h)
 
 PROGS := bin/wskel bin/wskel-gen
 HAVE_CGAL := $(wildcard /usr/include/CGAL/create_straight_skeleton_2.h)

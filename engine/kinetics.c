@@ -30,14 +30,9 @@ void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L) 
 }
 
 wk_point wk_polygon_centre(const wk_polygon *P) {
-    double x0 = P->p[0].x, x1 = x0, y0 = P->p[0].y, y1 = y0;
-    for (uint32_t i = 1; i < P->n; i++) {
-        x0 = fmin(x0, P->p[i].x);
-        x1 = fmax(x1, P->p[i].x);
-        y0 = fmin(y0, P->p[i].y);
-        y1 = fmax(y1, P->p[i].y);
-    }
-    return (wk_point){0.5 * x0 + 0.5 * x1, 0.5 * y0 + 0.5 * y1};
+    wk_point lo, hi;
+    wk_polygon_bbox(P, &lo, &hi);
+    return (wk_point){0.5 * lo.x + 0.5 * hi.x, 0.5 * lo.y + 0.5 * hi.y};
 }
 
 wk_velocity_kind wk_vertex_velocity(const wk_offset_line *a, const wk_offset_line *b,

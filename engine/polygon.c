@@ -581,15 +581,20 @@ bool wk_polygon_is_reflex(const wk_polygon *P, uint32_t i) {
     return wk_orient2d(P->p[prev_of(i, n)], P->p[i], P->p[next_of(i, n)], NULL) < 0;
 }
 
-double wk_polygon_scale(const wk_polygon *P) {
-    double x0 = P->p[0].x, x1 = x0, y0 = P->p[0].y, y1 = y0;
+void wk_polygon_bbox(const wk_polygon *P, wk_point *lo, wk_point *hi) {
+    *lo = *hi = P->p[0];
     for (uint32_t i = 1; i < P->n; i++) {
-        if (P->p[i].x < x0) x0 = P->p[i].x;
-        if (P->p[i].x > x1) x1 = P->p[i].x;
-        if (P->p[i].y < y0) y0 = P->p[i].y;
-        if (P->p[i].y > y1) y1 = P->p[i].y;
+        if (P->p[i].x < lo->x) lo->x = P->p[i].x;
+        if (P->p[i].x > hi->x) hi->x = P->p[i].x;
+        if (P->p[i].y < lo->y) lo->y = P->p[i].y;
+        if (P->p[i].y > hi->y) hi->y = P->p[i].y;
     }
-    return hypot(x1 - x0, y1 - y0);
+}
+
+double wk_polygon_scale(const wk_polygon *P) {
+    wk_point lo, hi;
+    wk_polygon_bbox(P, &lo, &hi);
+    return hypot(hi.x - lo.x, hi.y - lo.y);
 }
 
 uint32_t wk_polygon_input_edge(const wk_polygon *P, uint32_t e) {

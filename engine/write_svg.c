@@ -116,13 +116,9 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
         return R->err.code;
     }
 
-    double x0 = P->p[0].x, x1 = x0, y0 = P->p[0].y, y1 = y0;
-    for (uint32_t i = 1; i < P->n; i++) {
-        x0 = fmin(x0, P->p[i].x);
-        x1 = fmax(x1, P->p[i].x);
-        y0 = fmin(y0, P->p[i].y);
-        y1 = fmax(y1, P->p[i].y);
-    }
+    wk_point lo, hi;
+    wk_polygon_bbox(P, &lo, &hi);
+    double x0 = lo.x, x1 = hi.x, y0 = lo.y, y1 = hi.y;
     double scale = hypot(x1 - x0, y1 - y0), pad = 0.04 * scale, sw = 0.002 * scale;
     double W = x1 - x0 + 2 * pad, H = y1 - y0 + 2 * pad;
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"

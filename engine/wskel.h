@@ -354,6 +354,8 @@ wk_status wk_skeleton_merge_pass_through(wk_run *R, wk_skeleton *S);
 ** see (its default tolerance is 1e-6 * scale). */
 #define WK_TOL_REL 1e-9
 double wk_polygon_scale(const wk_polygon *P);
+/* The polygon's bounding box. */
+void wk_polygon_bbox(const wk_polygon *P, wk_point *lo, wk_point *hi);
 
 /* ------------------------------------------------------------ validator */
 

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "wskel.h"
+#include "fixtures.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -41,7 +42,6 @@ static wk_status read_data(wk_run *R, const char *rel, wk_polygon **P) {
 
 static void error_text(const wk_run *R, char *buf, size_t size) { wk_error_format(R, buf, size); }
 
-#define ASSERT_CLEAN_CLOSE(R) cr_assert_eq(wk_run_close(&(R)), 0, "leaked %zu bytes", (R).alloc.live)
 
 /* Builds from arrays and expects WK_EINPUT with `want` in the formatted
 ** message. */

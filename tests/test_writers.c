@@ -16,29 +16,14 @@
 #include <string.h>
 
 #include "wskel.h"
+#include "fixtures.h"
 
-#define ASSERT_CLEAN_CLOSE(R) cr_assert_eq(wk_run_close(&(R)), 0, "leaked %zu bytes", (R).alloc.live)
 
-typedef struct arc4 { uint32_t a, b, l, r; } arc4;
 
-static wk_polygon *polygon(wk_run *R, uint32_t n, const double *x, const double *y,
-                           const double *w) {
-    wk_polygon *P = NULL;
-    wk_status st = wk_polygon_from_arrays(R, n, x, y, w, "t.wpoly", NULL, &P);
-    cr_assert_eq(st, WK_OK, "polygon rejected: %s", R->err.msg);
-    return P;
-}
-
-static wk_skeleton *skeleton(wk_run *R, const wk_polygon *P, uint32_t n_extra,
-                             const wk_node *extra, uint32_t n_arcs, const arc4 *arcs) {
-    wk_skeleton *S;
-    cr_assert_eq(wk_skeleton_new(R, P, &S), WK_OK);
-    for (uint32_t i = 0; i < n_extra; i++) {
-        uint32_t id;
-        cr_assert_eq(wk_skeleton_add_node(R, S, extra[i].x, extra[i].y, extra[i].t, &id), WK_OK);
-    }
-    for (uint32_t i = 0; i < n_arcs; i++)
-        cr_assert_eq(wk_skeleton_add_arc(R, S, arcs[i].a, arcs[i].b, arcs[i].l, arcs[i].r), WK_OK);
+/* The fixtures' skeleton, validated: writers are tested on valid input. */
+static wk_skeleton *valid_skeleton(wk_run *R, const wk_polygon *P, uint32_t n_extra,
+                                   const wk_node *extra, uint32_t n_arcs, const arc4 *arcs) {
+    wk_skeleton *S = skeleton(R, P, n_extra, extra, n_arcs, arcs);
     cr_assert_eq(wk_validate(R, P, S, 0, NULL), WK_OK, "test skeleton invalid: %s", R->err.msg);
     return S;
 }
@@ -61,7 +46,7 @@ static const double CW_X[4] = {0, 0, 1, 1}, CW_Y[4] = {0, 1, 1, 0};
 static wk_skeleton *cw_square(wk_run *R, wk_polygon **P) {
     *P = polygon(R, 4, CW_X, CW_Y, NULL);
     cr_assert((*P)->reversed);
-    return skeleton(R, *P, 1, SQ_NODES, 4, SQ_ARCS);
+    return valid_skeleton(R, *P, 1, SQ_NODES, 4, SQ_ARCS);
 }
 
 /* Everything a writer wrote: f is a tmpfile, read back whole. */
@@ -143,7 +128,7 @@ Test(write_json, contract_keys_and_round_trip) {
     wk_run R;
     wk_run_init(&R);
     wk_polygon *P = polygon(&R, 4, SQ_X, SQ_Y, NULL);
-    wk_skeleton *S = skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
+    wk_skeleton *S = valid_skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
     S->nodes[4].t = nextafter(0.5, 1); /* 0.50000000000000011: needs 17 digits */
     S->nodes[4].x = nextafter(0.5, 0);
     wk_event ev = {0, 0, 0, 0, 0, 0};
@@ -187,7 +172,7 @@ Test(write_json, k_variant_and_missing_info) {
     wk_run R;
     wk_run_init(&R);
     wk_polygon *P = polygon(&R, 4, SQ_X, SQ_Y, NULL);
-    wk_skeleton *S = skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
+    wk_skeleton *S = valid_skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
     FILE *f = tmpfile();
     cr_assert_eq(wk_write_json(&R, f, P, S, NULL), WK_OK);
     char *s = slurp(f);
@@ -258,7 +243,7 @@ Test(write_text, round_trip_l_shape) {
     wk_run R;
     wk_run_init(&R);
     wk_polygon *P = polygon(&R, 6, L_X, L_Y, NULL);
-    wk_skeleton *S = skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
+    wk_skeleton *S = valid_skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
     S->nodes[7].x = 1.5 + 1e-16 * 3; /* round trip, not equality by luck */
     char *s = write_to_string(&R, W_TEXT, P, S);
     cr_assert_eq(s[0], '#');
@@ -323,7 +308,7 @@ Test(write_obj, one_vertex_per_node_one_face_per_edge) {
     wk_run R;
     wk_run_init(&R);
     wk_polygon *P = polygon(&R, 6, L_X, L_Y, NULL);
-    wk_skeleton *S = skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
+    wk_skeleton *S = valid_skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
     char *s = write_to_string(&R, W_OBJ, P, S);
     cr_assert_eq(s[0], '#');
     cr_assert_eq(count_of(s, "\nv "), 9);
@@ -362,7 +347,7 @@ Test(write_svg, layers_and_reflex_arc) {
     wk_run R;
     wk_run_init(&R);
     wk_polygon *P = polygon(&R, 6, L_X, L_Y, NULL);
-    wk_skeleton *S = skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
+    wk_skeleton *S = valid_skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
     char *s = write_to_string(&R, W_SVG, P, S);
     cr_assert(!strncmp(s, "<?xml", 5));
     cr_assert(strstr(s, "<svg xmlns=\"http://www.w3.org/2000/svg\""));
@@ -386,7 +371,7 @@ Test(write_svg, offset_curve_of_square) {
     wk_run R;
     wk_run_init(&R);
     wk_polygon *P = polygon(&R, 4, SQ_X, SQ_Y, NULL);
-    wk_skeleton *S = skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
+    wk_skeleton *S = valid_skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
     const double t[3] = {0.25, 0, 0.75}; /* t = 0 draws nothing; 0.75 is past the end */
     FILE *f = tmpfile();
     cr_assert_eq(wk_write_svg(&R, f, P, S, t, 3), WK_OK, "%s", R.err.msg);
@@ -408,7 +393,7 @@ Test(write_vtp, counts_and_cell_data) {
     wk_run R;
     wk_run_init(&R);
     wk_polygon *P = polygon(&R, 6, L_X, L_Y, NULL);
-    wk_skeleton *S = skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
+    wk_skeleton *S = valid_skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
     char *s = write_to_string(&R, W_VTP, P, S);
     cr_assert(strstr(s, "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">"));
     cr_assert(strstr(s, "NumberOfPoints=\"9\" NumberOfVerts=\"0\" NumberOfLines=\"14\" "
@@ -437,7 +422,7 @@ Test(writers, failing_stream_is_reported) {
         wk_run R;
         wk_run_init(&R);
         wk_polygon *P = polygon(&R, 6, L_X, L_Y, NULL);
-        wk_skeleton *S = skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
+        wk_skeleton *S = valid_skeleton(&R, P, 3, L_NODES, 8, L_ARCS);
         FILE *f = fopen("/dev/full", "w");
         cr_assert_not_null(f);
         wk_status st = write_with(&R, w, f, P, S);
@@ -456,7 +441,7 @@ Test(writers, bad_ids_refused_before_writing) {
         wk_run R;
         wk_run_init(&R);
         wk_polygon *P = polygon(&R, 4, SQ_X, SQ_Y, NULL);
-        wk_skeleton *S = skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
+        wk_skeleton *S = valid_skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
         S->arcs[2].b = 99;
         FILE *f = tmpfile();
         wk_status st = write_with(&R, w, f, P, S);
@@ -477,7 +462,7 @@ Test(writers, broken_faces) {
         wk_run R;
         wk_run_init(&R);
         wk_polygon *P = polygon(&R, 4, SQ_X, SQ_Y, NULL);
-        wk_skeleton *S = skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
+        wk_skeleton *S = valid_skeleton(&R, P, 1, SQ_NODES, 4, SQ_ARCS);
         S->arcs[0] = (wk_arc){0, 4, 0, 3};
         FILE *f = tmpfile();
         wk_status st = write_with(&R, w, f, P, S);
