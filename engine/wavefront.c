@@ -370,10 +370,10 @@ static wk_status collect_cycles(wk_wavefront *N) {
     return WK_OK;
 }
 
-static wk_status add_sub(wk_wavefront *N, uint32_t from, uint32_t to, uint32_t edge, uint32_t piece) {
+static wk_status add_sub(wk_wavefront *N, uint32_t from, uint32_t to, uint32_t edge) {
     if (from == to) return WK_OK; /* zero length: this piece collapsed */
     if (WK_GROW(N->R, N->sub, N->cap_sub, N->n_sub + 1) != WK_OK) return N->R->err.code;
-    N->sub[N->n_sub++] = (wk_wf_sub){from, to, edge, piece, WK_NONE, WK_NONE, WK_NONE, WK_NONE, 0};
+    N->sub[N->n_sub++] = (wk_wf_sub){from, to, edge, WK_NONE, WK_NONE, 0};
     return WK_OK;
 }
 
@@ -539,11 +539,11 @@ static wk_status plan(wk_wavefront *N, double t, bool *again) {
         uint32_t from = A->at != WK_NONE ? (A->at | NODE_BIT) : a;
         for (uint32_t j = pi0; j < pi1; j++) {
             uint32_t to = N->pin[j].node | NODE_BIT;
-            if (add_sub(N, from, to, A->eout, a) != WK_OK) return R->err.code;
+            if (add_sub(N, from, to, A->eout) != WK_OK) return R->err.code;
             from = to;
         }
         uint32_t to = N->v[b].at != WK_NONE ? (N->v[b].at | NODE_BIT) : b;
-        if (add_sub(N, from, to, A->eout, a) != WK_OK) return R->err.code;
+        if (add_sub(N, from, to, A->eout) != WK_OK) return R->err.code;
     }
     /* cancellation: opposite sub-pieces between the same two nodes */
     if (N->n_sub > 1) {
@@ -1061,7 +1061,6 @@ static wk_status process_group(wk_wavefront *N, double t) {
     N->n_dead = 0;
     for (int round = 0;; round++) {
         bool again;
-        for (uint32_t i = 0; i < N->n_sub; i++) N->sub[i].pair_in = N->sub[i].pair_out = WK_NONE;
         if (plan(N, t, &again) != WK_OK) return R->err.code;
         if (!again) break;
         if (round > 64 + (int)N->n_comp)

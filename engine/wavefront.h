@@ -50,12 +50,10 @@ typedef struct wk_wf_pinch { uint32_t piece; double s; uint32_t node; } wk_wf_pi
 
 typedef struct wk_wf_sub {
     uint32_t from, to;   /* point: node index | NODE_BIT, or a vertex id */
-    uint32_t edge;
-    uint32_t piece;      /* start vertex of the piece it came from */
-    uint32_t tail, head; /* commit: vertex ids at its ends */
+    uint32_t edge;       /* input edge whose offset line carries it */
     uint32_t pair_in;    /* index of the pair using it as incoming */
     uint32_t pair_out;   /* ... as outgoing */
-    uint8_t dead;
+    uint8_t dead;        /* 1: gone (collapsed or folded), 2: cancelled, leaves an arc */
 } wk_wf_sub;
 
 typedef struct wk_wf_pair { uint32_t in, out, node, vertex; } wk_wf_pair;
