@@ -29,7 +29,6 @@ static void *libc_realloc(void *ud, void *p, size_t old_size, size_t new_size) {
 
 static void count_event(void *ud, wk_event_kind kind, const wk_event *e) {
     wk_counters *c = ud;
-    (void)e;
     switch (kind) {
     case WK_EV_EDGE: c->edge_events++; break;
     case WK_EV_SPLIT: c->split_events++; break;
@@ -40,6 +39,14 @@ static void count_event(void *ud, wk_event_kind kind, const wk_event *e) {
     case WK_EV_VANISH: c->vanishing_components++; break;
     case WK_EV_GROUP: c->simultaneous_event_groups++; break;
     case WK_EV_COLLINEAR: c->collinear_resolutions++; break;
+    case WK_EV_CHAIN_EDGE:
+        c->edge_events++;
+        if (e->c == 0) c->chain_edge_events_lower++;
+        else c->chain_edge_events_upper++;
+        break;
+    case WK_EV_MERGE_VERTEX: c->merge_chain_vertices++; break;
+    case WK_EV_MERGE_CELL: c->merge_cells_visited++; break;
+    case WK_EV_FALLBACK: c->reference_fallbacks++; break;
     case WK_EV_KIND_COUNT: break;
     }
 }

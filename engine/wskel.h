@@ -89,6 +89,11 @@ typedef struct wk_alloc {
     X(vanishing_components)                \
     X(simultaneous_event_groups)           \
     X(collinear_resolutions)               \
+    X(chain_edge_events_lower)             \
+    X(chain_edge_events_upper)             \
+    X(merge_chain_vertices)                \
+    X(merge_cells_visited)                 \
+    X(reference_fallbacks)                 \
     X(arrangement_inserts)                 \
     X(arrangement_removes)                 \
     X(arrangement_crossings_initial)       \
@@ -123,6 +128,12 @@ typedef enum wk_event_kind {
     WK_EV_VANISH,            /* a wavefront component vanished */
     WK_EV_GROUP,             /* a group of simultaneous events was resolved */
     WK_EV_COLLINEAR,         /* parallel edges of different weight met (rule) */
+    WK_EV_CHAIN_EDGE,        /* monotone: edge event in a chain, c = 0 lower,
+                                1 upper (also counted as an edge event) */
+    WK_EV_MERGE_VERTEX,      /* monotone: a vertex of the merge chain */
+    WK_EV_MERGE_CELL,        /* monotone: a face cell the merge walk entered */
+    WK_EV_FALLBACK,          /* a variant handed the input to the reference
+                                wavefront (brute-force splits) */
     WK_EV_KIND_COUNT
 } wk_event_kind;
 

@@ -150,7 +150,8 @@ static wk_status clip_chain(asm_ctx *A, uint32_t c, uint32_t *ci) {
             ** of the chain's wavefront that the polygon's does not have (the
             ** polygon's wavefront lost those pieces where M' crossed them);
             ** with weights it can reach across M' and 001's lower-envelope
-            ** argument fails (README.md): refuse rather than guess. */
+            ** argument fails (README.md): give up rather than guess
+            ** (monotone.c hands the polygon to the reference). */
             if (side == ST_CUT)
                 return WK_FAIL(R, WK_EALGO, M->P->name, 0,
                                "monotone: the chain skeletons do not describe this weighted "

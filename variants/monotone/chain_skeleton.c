@@ -387,7 +387,7 @@ wk_status wk_mono_chain_build(mono *M, uint32_t c) {
         }
         A = &C->v[a];
         wk_event e = {t, A->ev_p.x, A->ev_p.y, a, b, c};
-        wk_notify_event(R, WK_EV_EDGE, &e);
+        wk_notify_event(R, WK_EV_CHAIN_EDGE, &e); /* e.c: the chain */
         uint32_t Pv = A->prev, Qv = C->v[b].next, ein = A->ein, eout = C->v[b].eout;
         terminate(&S, a, node);
         terminate(&S, b, node);

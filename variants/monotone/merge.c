@@ -140,6 +140,12 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
     (void)e;
 }
 
+/* The walk's unit of work (001's trapezoid cell): one wall trace looked at. */
+static void visit(const walk *W, uint32_t c, uint32_t v) {
+    wk_event ev = {0, 0, 0, v, WK_NONE, c};
+    wk_notify_event(W->M->R, WK_EV_MERGE_CELL, &ev);
+}
+
 /* Walk one wall of face e (trace ids w[0..k)) from the current level. */
 static void walk_wall(const walk *W, uint32_t c, const uint32_t *w, uint32_t k, bool left_wall,
                       uint32_t e, double tau_p, double kappa, hit *best) {
@@ -159,6 +165,7 @@ static void walk_wall(const walk *W, uint32_t c, const uint32_t *w, uint32_t k, 
             double lim = isfinite(best->lambda) ? tau_p + kappa * best->lambda : INFINITY;
             if (kappa == 0) lim = tau_p;
             if (C->v[w[j]].t0 > lim + tol) break;
+            visit(W, c, w[j]);
             test_trace(W, c, w[j], left_wall, e, best);
         }
     } else {
@@ -172,6 +179,7 @@ static void walk_wall(const walk *W, uint32_t c, const uint32_t *w, uint32_t k, 
         for (uint32_t j = lo; j-- > 0;) {
             double lim = isfinite(best->lambda) ? tau_p + kappa * best->lambda : -INFINITY;
             if (C->v[w[j]].t1 < lim - tol) break;
+            visit(W, c, w[j]);
             test_trace(W, c, w[j], left_wall, e, best);
         }
     }
@@ -196,6 +204,8 @@ static wk_status add_mnode(mono *M, wk_point p, double t, uint32_t sk, uint32_t 
     M->mn[M->n_mn].t = t;
     M->mn[M->n_mn].sk = sk;
     *id = M->n_mn++;
+    wk_event ev = {t, p.x, p.y, *id, sk, WK_NONE};
+    wk_notify_event(M->R, WK_EV_MERGE_VERTEX, &ev);
     return WK_OK;
 }
 

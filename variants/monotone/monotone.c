@@ -6,11 +6,14 @@
 ** monotonicity or refuse (WK_EALGO, CLI exit 2); simulate the lower and the
 ** upper chain, each extended by rays (edge collapses only); walk the merge
 ** chain from v_w to v_e; clip the chain skeletons to their sides of it;
-** validate the result (a failure becomes WK_EALGO, never a wrong output).
-** Every allocation goes through R and is freed before returning, so a
-** failure at any point leaves no output and no live bytes.
+** validate the result.  A monotone polygon the merge cannot certify goes
+** to the reference wavefront instead (monotone_run, below): never a wrong
+** output, and no refusal except "monotone in no direction".  Every
+** allocation goes through R and is freed before returning, so a failure at
+** any point leaves no output and no live bytes.
 */
 #include "monotone_internal.h"
+#include "wavefront.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -25,64 +28,90 @@ static void mono_clear(mono *M) {
     WK_FREE_ARRAY(R, M->ma, M->cap_ma);
 }
 
+/* 001's pipeline on P.  WK_EALGO with *refused set: P is monotone in no
+** direction (the variant's answer, not a failure).  WK_EALGO otherwise: the
+** merge could not certify this input (see README.md); the caller falls back.
+** Validates its own result. */
+static wk_status monotone_merge_run(mono *M, bool *refused, wk_skeleton **out) {
+    wk_run *R = M->R;
+    const wk_polygon *P = M->P;
+    double wmax = 0;
+    for (uint32_t i = 0; i < P->n; i++) wmax = P->w[i] > wmax ? P->w[i] : wmax;
+    M->eps_d = WK_TOL_REL * wk_polygon_scale(P);
+    M->eps_t = M->eps_d / wmax;
+    wk_status st;
+    M->L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
+    if (!M->L) return R->err.code;
+    for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge(P, i, &M->L[i]);
+    if ((st = wk_mono_direction(M)) != WK_OK) {
+        *refused = M->not_monotone;
+        return st;
+    }
+    if (!M->strict) {
+        /* Walls perpendicular to the sweep with weights: the merge walk's
+        ** local decisions were seen to pass the validator with a skeleton
+        ** other than naive's (rectilinear family, uniform weights). */
+        for (uint32_t i = 1; i < P->n; i++)
+            if (P->w[i] != P->w[0])
+                return WK_FAIL(R, WK_EALGO, P->name, 0,
+                               "monotone: the polygon is monotone only with edges perpendicular "
+                               "to the sweep, and has unequal weights: not handled");
+    }
+    uint32_t n = P->n;
+    M->ch[0].first = M->vw; /* lower: v_w -> v_e */
+    M->ch[0].m = (M->ve + n - M->vw) % n;
+    M->ch[1].first = M->ve; /* upper: v_e -> v_w */
+    M->ch[1].m = (M->vw + n - M->ve) % n;
+    for (uint32_t c = 0; c < 2; c++)
+        if ((st = wk_mono_chain_build(M, c)) != WK_OK) return st;
+    if ((st = wk_mono_merge(M)) != WK_OK) return st;
+    if ((st = wk_mono_assemble(M, out)) != WK_OK) return st;
+    /* The last line of defence (STYLE.md: never a wrong skeleton): the
+    ** validator is about linear, and degenerate inputs (walls facing each
+    ** other, M' along chain arcs) and weights (README.md) are where the
+    ** local decisions of merge.c and assemble.c can go wrong. */
+    st = wk_validate(R, P, *out, 0, NULL);
+    if (st != WK_OK) {
+        wk_skeleton_free(R, *out);
+        *out = NULL;
+        if (st != WK_ENOMEM) {
+            char msg[sizeof R->err.msg];
+            snprintf(msg, sizeof msg, "%s", R->err.msg);
+            memset(&R->err, 0, sizeof R->err); /* report it as this variant's failure */
+            st = WK_FAIL(R, WK_EALGO, P->name, 0, "monotone: the result fails validation (%s)",
+                         msg);
+        }
+    }
+    return st;
+}
+
+/* Where 001's merge cannot certify its result (weighted inputs whose chain
+** skeletons do not describe the polygon, walls perpendicular to the sweep
+** with weights, a walk that gets lost in a degenerate pass), the input goes
+** to the reference wavefront (engine/wavefront.c with brute-force splits,
+** the same code as naive): a right skeleton at the reference's cost, never
+** a wrong one and never a refusal of a monotone polygon.  The
+** reference_fallbacks counter says when that happened, and the first
+** attempt's memory is freed before the fallback starts. */
 static wk_status monotone_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
     mono M;
     memset(&M, 0, sizeof M);
     M.R = R;
     M.P = P;
     *out = NULL;
-    double wmax = 0;
-    for (uint32_t i = 0; i < P->n; i++) wmax = P->w[i] > wmax ? P->w[i] : wmax;
-    M.eps_d = WK_TOL_REL * wk_polygon_scale(P);
-    M.eps_t = M.eps_d / wmax;
-    wk_status st = WK_OK;
-    M.L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
-    if (!M.L) {
-        st = R->err.code;
-        goto done;
-    }
-    for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge(P, i, &M.L[i]);
-    if ((st = wk_mono_direction(&M)) != WK_OK) goto done;
-    if (!M.strict) {
-        /* Walls perpendicular to the sweep with weights: the merge walk's
-        ** local decisions were seen to pass the validator with a skeleton
-        ** other than naive's (rectilinear family, uniform weights), so
-        ** such inputs are refused until that is understood (README.md). */
-        for (uint32_t i = 1; i < P->n; i++)
-            if (P->w[i] != P->w[0]) {
-                st = WK_FAIL(R, WK_EALGO, P->name, 0,
-                             "monotone: the polygon is monotone only with edges perpendicular "
-                             "to the sweep, and has unequal weights: not handled");
-                goto done;
-            }
-    }
-    uint32_t n = P->n;
-    M.ch[0].first = M.vw; /* lower: v_w -> v_e */
-    M.ch[0].m = (M.ve + n - M.vw) % n;
-    M.ch[1].first = M.ve; /* upper: v_e -> v_w */
-    M.ch[1].m = (M.vw + n - M.ve) % n;
-    for (uint32_t c = 0; c < 2; c++)
-        if ((st = wk_mono_chain_build(&M, c)) != WK_OK) goto done;
-    if ((st = wk_mono_merge(&M)) != WK_OK) goto done;
-    if ((st = wk_mono_assemble(&M, out)) != WK_OK) goto done;
-    /* The last line of defence (STYLE.md: never a wrong skeleton): the
-    ** validator is about linear, and degenerate inputs (walls facing each
-    ** other, M' along chain arcs) and weights (README.md) are where the
-    ** local decisions of merge.c and assemble.c can go wrong. */
-    st = wk_validate(R, P, *out, 0, NULL);
-    if (st == WK_ENOMEM) {
-        wk_skeleton_free(R, *out);
-        *out = NULL;
-    } else if (st != WK_OK) {
-        char msg[sizeof R->err.msg];
-        snprintf(msg, sizeof msg, "%s", R->err.msg);
-        memset(&R->err, 0, sizeof R->err); /* report it as this variant's failure */
-        st = WK_FAIL(R, WK_EALGO, P->name, 0, "monotone: the result fails validation (%s)", msg);
-        wk_skeleton_free(R, *out);
-        *out = NULL;
-    }
-done:
+    bool refused = false;
+    wk_status st = monotone_merge_run(&M, &refused, out);
     mono_clear(&M);
+    if (st != WK_EALGO || refused) return st;
+    memset(&R->err, 0, sizeof R->err);
+    wk_event ev = {0, 0, 0, WK_NONE, WK_NONE, WK_NONE};
+    wk_notify_event(R, WK_EV_FALLBACK, &ev);
+    if ((st = wk_wavefront_run(R, P, &wk_split_finder_brute_force, NULL, out)) != WK_OK)
+        return st;
+    if ((st = wk_validate(R, P, *out, 0, NULL)) != WK_OK) {
+        wk_skeleton_free(R, *out);
+        *out = NULL;
+    }
     return st;
 }
 
