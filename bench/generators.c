@@ -35,7 +35,7 @@ static const family families[] = {
     {"notched", wk_gen_notched,
      "regular n-gon with r (<= n/2, default n/4) non-adjacent vertices pushed in"},
     {"crossing", wk_gen_crossing,
-     "square with r spikes on two walls, ceil(r/2)*floor(r/2) ray crossings; n >= 3r+4"},
+     "disc with r spikes at staggered depths, every pair of rays crosses: r(r-1)/2; n >= 3r+4"},
     {"random", wk_gen_random,
      "random simple polygon: 2-opt untangled points (n <= 5000), else random star"},
     {"monotone", wk_gen_monotone, "x-monotone, exactly r reflex (r <= n-3, default (n-2)/2)"},

@@ -30,7 +30,7 @@ typedef struct wk_gen_params {
 
 /* Bumped whenever some family's output changes for the same parameters, so a
 ** file's header says which generator made it. */
-#define WK_GEN_VERSION 1
+#define WK_GEN_VERSION 2
 /* Largest n any family accepts: the curved families keep every turn far
 ** above double rounding up to here (see bench/README.md). */
 #define WK_GEN_N_MAX 10000000u

@@ -6,7 +6,7 @@
 ** simple (wk_polygon_from_arrays's sweep, and for small n an independent
 ** O(n^2) check with wk_segments_meet), deterministic per seed, different
 ** across seeds; the weight modes stay in range and never move a vertex; the
-** crossing family's bisector rays cross ceil(r/2)*floor(r/2) times (counted
+** crossing family's r bisector rays cross pairwise, r(r-1)/2 times (counted
 ** by brute force); impossible parameters fail with WK_EINPUT and a message
 ** naming the limit; allocation failures are clean.  Each test has its own
 ** run and ends with zero live bytes.
@@ -322,11 +322,11 @@ static ray bisector_ray(const wk_polygon *P, uint32_t i) {
 }
 
 static uint64_t count_ray_crossings(const wk_polygon *P) {
-    ray rays[64];
+    ray rays[128];
     uint32_t k = 0;
     for (uint32_t i = 0; i < P->n; i++)
         if (wk_polygon_is_reflex(P, i)) {
-            cr_assert(k < 64);
+            cr_assert(k < 128);
             rays[k++] = bisector_ray(P, i);
         }
     uint64_t crossings = 0;
@@ -340,13 +340,13 @@ static uint64_t count_ray_crossings(const wk_polygon *P) {
 Test(generators, crossing_family_ray_crossings) {
     wk_run R;
     wk_run_init(&R);
-    static const int64_t rs[] = {0, 1, 2, 3, 4, 6, 9, 10, 16, 21, 32, 40};
+    static const int64_t rs[] = {0, 1, 2, 3, 4, 5, 6, 9, 10, 16, 21, 32, 40, 101, 128};
     for (size_t j = 0; j < sizeof rs / sizeof rs[0]; j++) {
         int64_t r = rs[j];
-        uint64_t want = (uint64_t)((r + 1) / 2) * (uint64_t)(r / 2);
-        for (uint32_t pad = 1; pad <= 50; pad += 49)
+        uint64_t want = (uint64_t)r * (uint64_t)(r > 0 ? r - 1 : 0) / 2;
+        for (uint32_t pad = 4; pad <= 54; pad += 25)
             for (uint64_t seed = 1; seed <= 3; seed++) {
-                uint32_t n = (uint32_t)(3 * r + 3) + pad;
+                uint32_t n = (uint32_t)(3 * r) + pad;
                 wk_polygon *P = NULL;
                 cr_assert_eq(gen(&R, "crossing", n, r, seed, NULL, &P), WK_OK, "%s", R.err.msg);
                 uint64_t got = count_ray_crossings(P);
