@@ -47,6 +47,7 @@ static void count_event(void *ud, wk_event_kind kind, const wk_event *e) {
     case WK_EV_MERGE_VERTEX: c->merge_chain_vertices++; break;
     case WK_EV_MERGE_CELL: c->merge_cells_visited++; break;
     case WK_EV_FALLBACK: c->reference_fallbacks++; break;
+    case WK_EV_BRUTE_SPLIT: c->brute_force_split_scans++; break;
     case WK_EV_KIND_COUNT: break;
     }
 }

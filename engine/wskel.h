@@ -94,6 +94,7 @@ typedef struct wk_alloc {
     X(merge_chain_vertices)                \
     X(merge_cells_visited)                 \
     X(reference_fallbacks)                 \
+    X(brute_force_split_scans)             \
     X(arrangement_inserts)                 \
     X(arrangement_removes)                 \
     X(arrangement_crossings_initial)       \
@@ -134,6 +135,8 @@ typedef enum wk_event_kind {
     WK_EV_MERGE_CELL,        /* monotone: a face cell the merge walk entered */
     WK_EV_FALLBACK,          /* a variant handed the input to the reference
                                 wavefront (brute-force splits) */
+    WK_EV_BRUTE_SPLIT,       /* arrangement: a split searched over the whole
+                                cycle (F unknown or segment not yet built) */
     WK_EV_KIND_COUNT
 } wk_event_kind;
 

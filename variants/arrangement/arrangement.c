@@ -404,7 +404,11 @@ static wk_status remove_segment(ar_state *A, uint32_t si) {
 /* Defensive fallback: v's first hit over its whole cycle, for the rare
 ** reflex vertex whose F is unknown (its ray met no piece: a vanishing
 ** cycle, or a ray through a vertex that stays ambiguous). */
-static void brute_split(wk_wavefront *W, uint32_t v) { wk_wavefront_split_scan(W, v); }
+static void brute_split(wk_wavefront *W, uint32_t v) {
+    wk_event ev = {W->t_now, 0, 0, v, WK_NONE, WK_NONE};
+    wk_notify_event(W->R, WK_EV_BRUTE_SPLIT, &ev);
+    wk_wavefront_split_scan(W, v);
+}
 
 /* v's split: v meets F along its segment. */
 static void ar_full(void *ud, wk_wavefront *W, uint32_t v) {
