@@ -982,6 +982,15 @@ static char **read_done_keys(const char *path, long *count) {
     char line[8192];
     bool header_seen = false;
     while (fgets(line, sizeof line, f)) {
+        int gv;
+        if (sscanf(line, "# generator version: %d", &gv) == 1 && gv != WK_GEN_VERSION) {
+            /* its rows describe other polygons under the same keys */
+            fprintf(stderr,
+                    "wskel-bench: %s: written with generator version %d, this is %d: "
+                    "--resume would mix polygons; remove it or choose another --out\n",
+                    path, gv, WK_GEN_VERSION);
+            exit(1);
+        }
         if (line[0] == '#' || line[0] == '\n') continue;
         if (!header_seen) {
             header_seen = true;

@@ -88,6 +88,9 @@ check "resume after kill -9: same rows (and the kill did interrupt)" \
     'grep -q "^# resumed [1-9]" $T/kill.csv && cmp -s <(stable_cols $T/kill.csv) <(stable_cols $T/kill_ref.csv)'
 check "resume of a finished sweep runs nothing" \
     '$BENCH "${sweep[@]}" --resume --dry-run --out $T/full.csv | wc -l | grep -qx 0'
+sed 's/^# generator version: [0-9]*/# generator version: 0/' "$T/full.csv" > "$T/oldgen.csv"
+check "resume refuses a CSV of another generator version" \
+    '! $BENCH "${sweep[@]}" --resume --out $T/oldgen.csv 2>$T/oldgen.err && grep -q "generator version 0" $T/oldgen.err'
 
 # ---- 3. shards
 $BENCH "${sweep[@]}" --dry-run > "$T/all.list"
