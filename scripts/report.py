@@ -6,9 +6,10 @@ The plots are linked relative to OUT.md's folder; only those present are
 embedded (plot.py skips figures whose data are absent).
 """
 import argparse
+import math
 import os
 import sys
-from collections import Counter
+from collections import Counter, defaultdict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fit  # noqa: E402
@@ -20,6 +21,47 @@ FIGURES = [
     ("k_tradeoff", "Time against peak memory, points labelled by k"),
     ("events_vs_bounds", "Event counts against their bounds (switch: n r, start: r^2)"),
 ]
+
+
+def k_sweeps(rows):
+    """Markdown lines: one table per configuration run at several numeric k
+    (time, peak tracked bytes, start events), with the least-squares slope of
+    log time against log k over k = 1..8 (the range where the r^3/k term
+    dominates on the sweeps of bench/sweeps/curves_k.spec)."""
+    groups = defaultdict(list)
+    for r in rows:
+        if r["status"] != "ok" or not r.get("k"):
+            continue
+        key = (r["variant"], r["family"], r["n"], r["r"], r["weights"], r["seed"])
+        groups[key].append(r)
+    out = []
+    for key, rs in sorted(groups.items(), key=lambda kv: str(kv[0])):
+        numeric = [r for r in rs if str(r["k"]) != "max"]
+        if len(numeric) < 3:
+            continue
+        rs.sort(key=lambda r: math.inf if str(r["k"]) == "max" else int(r["k"]))
+        fit_pts = [(math.log(int(r["k"])), math.log(r["wall_s"])) for r in numeric
+                   if int(r["k"]) <= 8 and r["wall_s"] > 0]
+        slope = None
+        if len(fit_pts) >= 2:
+            mx = sum(x for x, _ in fit_pts) / len(fit_pts)
+            my = sum(y for _, y in fit_pts) / len(fit_pts)
+            sxx = sum((x - mx) ** 2 for x, _ in fit_pts)
+            if sxx > 0:
+                slope = sum((x - mx) * (y - my) for x, y in fit_pts) / sxx
+        v, fam, n, r, w, seed = key
+        out.append("**%s, %s n=%s r=%s %s seed %s** (%s crossings at t = 0): slope of log "
+                   "time in log k over k = 1..8: %s" %
+                   (v, fam, n, r, w, seed, rs[0].get("crossings", "?"),
+                    "%.3f" % slope if slope is not None else "n/a"))
+        out.append("")
+        out.append("| k | time (s) | peak tracked (MB) | start events |")
+        out.append("|---|---|---|---|")
+        for x in rs:
+            out.append("| %s | %.3f | %.2f | %s |" % (x["k"], x["wall_s"],
+                       x["peak_tracked_bytes"] / 1e6, x.get("start_events", "")))
+        out.append("")
+    return out
 
 
 def main():
@@ -71,6 +113,11 @@ def main():
                  "The naive reference variant has no arrangement, so its r^3/k term only says "
                  "that its time grows like a power of r between 2 and 3 on these families.")
     lines.append("")
+    ks = k_sweeps(rows)
+    if ks:
+        lines.append("## k sweeps")
+        lines.append("")
+        lines.extend(ks)
     lines.append("## Figures")
     lines.append("")
     for name, caption in FIGURES:
