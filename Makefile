@@ -82,6 +82,7 @@ test-cli: all
 	bash tests/cli_tests.sh
 test-py: all
 	$(PY) tests/test_outputs.py
+	$(PY) tests/test_degenerate.py
 	$(PY) tests/test_cgal_agreement.py
 
 setup:

@@ -408,6 +408,60 @@ Test(validate, folded_ridge_f) {
     ASSERT_CLEAN_CLOSE(R);
 }
 
+/* Found by degenerate fuzzing (integer grid, integer weights): edges 1, 8
+** and 11 lie on parallel lines that the weights make meet at one instant.
+** A merge once produced arc 20 -> 18 along the flat event and arc 17 -> 18
+** folding back along it; the three nodes are collinear only up to 1e-16, so
+** the exact segment tests see the two sides touch at node 18, nothing more.
+** naive's skeleton of the same polygon is accepted. */
+static const double FOLD_X[12] = {0, 1, 0, 1, 3, 4, 3, 4, 3, 4, 0, 1};
+static const double FOLD_Y[12] = {2, 2, 1, 0, 0, 1, 2, 3, 3, 4, 4, 3};
+static const double FOLD_W[12] = {1, 2, 2, 2, 4, 5, 1, 2, 1, 2, 3, 5};
+static const wk_node FOLD_BAD_NODES[9] = {
+    {1.649165125326326, 0.73879612503625858, 0.36939806251812929},
+    {1.3347351072153746, 0.80812203564176843, 0.40406101782088422},
+    {1.2857142857142856, 0.8571428571428571, 0.40406101782088422},
+    {1.333333333333333, 1, 0.47140452079103157},
+    {2.3905242917512703, 2.0571909584179369, 0.47140452079103157},
+    {2.1952621458756347, 2.5285954792089687, 0.23570226039551581},
+    {2.3333333333333335, 2.666666666666667, 0.23570226039551587},
+    {2.5857864376269046, 3.1715728752538097, 0.41421356237309498},
+    {1.9023689270621824, 2.2357022603955152, 0.23570226039551581}};
+static const arc4 FOLD_BAD_ARCS[20] = {
+    {5, 12, 4, 5},    {6, 14, 5, 6},    {7, 16, 6, 7},    {8, 17, 7, 8},   {9, 19, 8, 9},
+    {11, 18, 10, 11}, {0, 20, 11, 0},   {1, 20, 0, 1},    {2, 15, 1, 2},   {3, 13, 2, 3},
+    {20, 18, 11, 1},  {4, 12, 3, 4},    {12, 13, 3, 5},   {13, 14, 2, 5},  {14, 15, 2, 6},
+    {15, 16, 1, 6},   {16, 17, 1, 7},   {17, 18, 1, 8},   {18, 19, 10, 8}, {19, 10, 10, 9}};
+static const wk_node FOLD_GOOD_NODES[9] = {
+    {1.9023689270621826, 2.2357022603955157, 0.23570226039551581},
+    {2.1952621458756352, 2.5285954792089687, 0.23570226039551581},
+    {2.333333333333333, 2.6666666666666665, 0.23570226039551581},
+    {1.6491651253263262, 0.73879612503625847, 0.36939806251812923},
+    {1.3347351072153741, 0.80812203564176865, 0.40406101782088433},
+    {1.2857142857142856, 0.85714285714285721, 0.40406101782088433},
+    {2.5857864376269051, 3.1715728752538102, 0.41421356237309498},
+    {1.3333333333333333, 1, 0.47140452079103162},
+    {2.3905242917512699, 2.0571909584179369, 0.47140452079103162}};
+static const arc4 FOLD_GOOD_ARCS[20] = {
+    {0, 12, 11, 0},  {1, 12, 0, 1},   {8, 13, 7, 8},   {11, 14, 10, 11}, {13, 14, 11, 8},
+    {13, 12, 1, 11}, {4, 15, 3, 4},   {5, 15, 4, 5},   {3, 16, 2, 3},    {15, 16, 3, 5},
+    {6, 17, 5, 6},   {16, 17, 2, 5},  {9, 18, 8, 9},   {10, 18, 9, 10},  {14, 18, 10, 8},
+    {2, 19, 1, 2},   {17, 19, 2, 6},  {7, 20, 6, 7},   {13, 20, 7, 1},   {19, 20, 1, 6}};
+
+Test(validate, fold_back_by_rounding_f) {
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = polygon(&R, 12, FOLD_X, FOLD_Y, FOLD_W);
+    wk_skeleton *bad = skeleton(&R, P, 9, FOLD_BAD_NODES, 20, FOLD_BAD_ARCS);
+    expect_invalid(&R, P, bad, 0, "validate (f)", "overlap", NULL);
+    wk_skeleton *good = skeleton(&R, P, 9, FOLD_GOOD_NODES, 20, FOLD_GOOD_ARCS);
+    expect_valid(&R, P, good, NULL);
+    wk_skeleton_free(&R, good);
+    wk_skeleton_free(&R, bad);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
+
 /* ---------------------------------------------------------- face cycles */
 
 Test(faces, square_cycles_and_errors) {

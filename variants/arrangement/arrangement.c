@@ -634,7 +634,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
             ar_seg *T = &A->s[sj];
             wk_point X = {S->o.x + lam * S->u.x, S->o.y + lam * S->u.y};
             double lx = lambda_of(T, X), lv = lambda_v(W, T, t), lf = lambda_f(W, T, t);
-            if (lx > lv + W->eps_d && (!isfinite(lf) || lx < lf - W->eps_d)) {
+            if (lx > lv - W->eps_d && (!isfinite(lf) || lx < lf - W->eps_d)) {
                 if (cut(A, W, sj, S->pa, lx, S->id) != WK_OK) return R->err.code;
             }
         }
@@ -650,7 +650,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
         ar_seg *T = &A->s[sj];
         wk_point X = {S->o.x + x.s * S->u.x, S->o.y + x.s * S->u.y};
         double lx = lambda_of(T, X), lv = lambda_v(W, T, t), lf = lambda_f(W, T, t);
-        if (lx > lv + W->eps_d && (!isfinite(lf) || lx < lf - W->eps_d)) {
+        if (lx > lv - W->eps_d && (!isfinite(lf) || lx < lf - W->eps_d)) {
             /* which of v's pieces faces v': the one whose crossing with s'
             ** moves towards v' */
             uint32_t v = S->v, cand[2] = {W->v[v].prev, v}, pick = WK_NONE;
