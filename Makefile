@@ -69,6 +69,8 @@ $(B)/tests/run_tests: $(TEST_SRC:%.c=$(B)/%.o) $(LIB)
 	$(CC) $(CFLAGS) $^ -o $@ -lcriterion $(LDLIBS)
 $(BA)/tests/run_tests: $(TEST_SRC:%.c=$(BA)/%.o) $(LIBASAN)
 	$(CC) $(CFLAGS) -fsanitize=address,undefined $^ -o $@ -lcriterion $(LDLIBS)
+$(BA)/wskel: $(BA)/cli/wskel.o $(LIBASAN)
+	$(CC) $(CFLAGS) -fsanitize=address,undefined $^ -o $@ $(LDLIBS)
 
 # Unit and property tests, then the same under ASan/UBSan, then the
 # command-line and Python-side tests (exit codes, messages, VTK read-back,
@@ -76,8 +78,9 @@ $(BA)/tests/run_tests: $(TEST_SRC:%.c=$(BA)/%.o) $(LIBASAN)
 test: all test-unit test-asan test-cli test-py test-bench
 test-unit: $(B)/tests/run_tests
 	$(B)/tests/run_tests --jobs 2
-test-asan: $(BA)/tests/run_tests
+test-asan: $(BA)/tests/run_tests $(BA)/wskel
 	WSKEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BA)/tests/run_tests --jobs 2
+	WSKEL_BIN=$(BA)/wskel WSKEL_DEGENERATE_CASES=400 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(PY) tests/test_degenerate.py
 test-cli: all
 	bash tests/cli_tests.sh
 test-py: all
