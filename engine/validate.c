@@ -517,6 +517,7 @@ typedef struct face_ctx {
     uint32_t L;           /* sides = nodes */
     const wk_point *pts;  /* the cycle's nodes in the xy plane */
     double tol;
+    const wk_skeleton *S; /* for the nodes' times */
 } face_ctx;
 
 /* "edge 3" for side 0 (the input edge), "arc 7 -> 9" for the others. */
@@ -558,7 +559,17 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
     ** can be far thinner than tol (a triangle with weights 1, 1000, 0.001:
     ** 1e-9 wide, 1 long; n = 10^6 monotone polygons: long faces 1e-3 wide). */
     double lab = hypot(b.x - a.x, b.y - a.y), lcd = hypot(d.x - c.x, d.y - c.y);
-    if (lab > F->tol && lcd > F->tol) {
+    /* Not where the sides stay within tol of the face's input edge (its
+    ** wavefront has moved at most tol at their nodes, side 0 included): that
+    ** is how the collinear rule traces an edge swept away at once, also when
+    ** the input's collinear vertices are collinear only up to rounding
+    ** (rotated grids: nodes at t = 1e-11 beside the input vertices, arcs
+    ** back and forth along the edges). */
+    double tmax = 0;
+    uint32_t ends[4] = {F->cyc[i], F->cyc[next_of(i, F->L)], F->cyc[j], F->cyc[next_of(j, F->L)]};
+    for (int k = 0; k < 4; k++) tmax = fmax(tmax, F->S->nodes[ends[k]].t);
+    bool at_boundary = tmax * F->P->w[F->e] <= F->tol;
+    if (!at_boundary && lab > F->tol && lcd > F->tol) {
         double mag = fmax(fmax(fmax(fabs(a.x), fabs(a.y)), fmax(fabs(b.x), fabs(b.y))),
                           fmax(fmax(fabs(c.x), fabs(c.y)), fmax(fabs(d.x), fabs(d.y))));
         double ftol = 64.0 * DBL_EPSILON * mag;
@@ -643,7 +654,7 @@ static wk_status check_planar(wk_run *R, const wk_polygon *P, const wk_skeleton 
     if (!pts) return R->err.code;
     wk_status st = WK_OK;
     for (uint32_t e = 0; e < F->n && st == WK_OK; e++) {
-        face_ctx fc = {P, e, F->node + F->start[e], F->start[e + 1] - F->start[e], pts, tol};
+        face_ctx fc = {P, e, F->node + F->start[e], F->start[e + 1] - F->start[e], pts, tol, S};
         for (uint32_t i = 0; i < fc.L; i++)
             pts[i] = (wk_point){S->nodes[fc.cyc[i]].x, S->nodes[fc.cyc[i]].y};
         st = check_face_simple(R, &fc);
