@@ -559,12 +559,13 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
     ** can be far thinner than tol (a triangle with weights 1, 1000, 0.001:
     ** 1e-9 wide, 1 long; n = 10^6 monotone polygons: long faces 1e-3 wide). */
     double lab = hypot(b.x - a.x, b.y - a.y), lcd = hypot(d.x - c.x, d.y - c.y);
-    /* Not where the sides stay within tol of the face's input edge (its
-    ** wavefront has moved at most tol at their nodes, side 0 included): that
-    ** is how the collinear rule traces an edge swept away at once, also when
-    ** the input's collinear vertices are collinear only up to rounding
-    ** (rotated grids: nodes at t = 1e-11 beside the input vertices, arcs
-    ** back and forth along the edges). */
+    /* Overlaps are allowed where the sides stay within tol of the face's
+    ** input edge (its wavefront has moved at most tol at their nodes, side 0
+    ** included): that is how an edge swept away at once is traced, by the
+    ** collinear rule or, for nearly collinear input edges of different
+    ** weight, by an edge event at t = 1e-12 (the vertex between them is
+    ** 10^11 times faster than the edges; rotated grids), with arcs back and
+    ** forth along the edge. */
     double tmax = 0;
     uint32_t ends[4] = {F->cyc[i], F->cyc[next_of(i, F->L)], F->cyc[j], F->cyc[next_of(j, F->L)]};
     for (int k = 0; k < 4; k++) tmax = fmax(tmax, F->S->nodes[ends[k]].t);
@@ -604,7 +605,7 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
     }
     if (m == WK_SEG_OVERLAP) {
         double len = overlap_length(a, b, c, d);
-        if (len <= F->tol) return WK_OK;
+        if (len <= F->tol || at_boundary) return WK_OK;
         return WK_FAIL(R, WK_EINVALID, F->P->name, 0,
                        "validate (f): the face of edge %u is not simple: %s and %s overlap "
                        "along a length of %.3g",
