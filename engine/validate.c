@@ -555,9 +555,11 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
     /* Sides on one line up to rounding overlap although the exact tests see
     ** them touch or miss (tests/data/degenerate/flat_triple_weighted.wpoly:
     ** an arc folding back along the next one at a node, off by 1e-16).  The
-    ** bar is rounding (64 ulp of the coordinates), not tol: legitimate faces
-    ** can be far thinner than tol (a triangle with weights 1, 1000, 0.001:
-    ** 1e-9 wide, 1 long; n = 10^6 monotone polygons: long faces 1e-3 wide). */
+    ** bar is rounding (64 ulp of the coordinates, and at most 1e-3 tol), not
+    ** tol: legitimate faces can be far thinner than tol (a triangle with
+    ** weights 1, 1000, 0.001: 1e-6 wide at 1000; n = 10^6 monotone polygons:
+    ** long faces 1e-3 wide; a 2e-3 polygon at 1e6 from the origin: faces
+    ** 1e-8 wide, where 64 ulp is 1.4e-8). */
     double lab = hypot(b.x - a.x, b.y - a.y), lcd = hypot(d.x - c.x, d.y - c.y);
     /* Overlaps are allowed where the sides stay within tol of the face's
     ** input edge (its wavefront has moved at most tol at their nodes, side 0
@@ -573,7 +575,7 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
     if (!at_boundary && lab > F->tol && lcd > F->tol) {
         double mag = fmax(fmax(fmax(fabs(a.x), fabs(a.y)), fmax(fabs(b.x), fabs(b.y))),
                           fmax(fmax(fabs(c.x), fabs(c.y)), fmax(fabs(d.x), fabs(d.y))));
-        double ftol = 64.0 * DBL_EPSILON * mag;
+        double ftol = fmin(64.0 * DBL_EPSILON * mag, 1e-3 * F->tol);
         bool ab_long = lab >= lcd;
         wk_point p = ab_long ? a : c, q = ab_long ? b : d;
         wk_point u = ab_long ? c : a, v = ab_long ? d : b;

@@ -144,7 +144,18 @@ wk_status wk_mono_direction(mono *M) {
         double len = mod_pi(g2 - g1), mid = g1 + 0.5 * len;
         wk_point dm = {cos(mid), sin(mid)};
         double start = g1;
-        if (proj(dm, u1) * proj(dm, u2) > 0) { /* the other arc */
+        if (len < 1e-6 || len > PI - 1e-6) {
+            /* u1 and u2 (nearly) on one line: the midpoint test would be
+            ** decided by rounding.  A nearly flat vertex (u1 . u2 < 0) is
+            ** bad only for d nearly perpendicular to its edges: the long
+            ** arc; a nearly 0-degree spike is good only there: the short. */
+            bool flat = u1.x * u2.x + u1.y * u2.y < 0;
+            bool first_long = len > 0.5 * PI;
+            if (flat != first_long) {
+                start = g2;
+                len = PI - len;
+            }
+        } else if (proj(dm, u1) * proj(dm, u2) > 0) { /* the other arc */
             start = g2;
             len = PI - len;
         }
