@@ -12,7 +12,9 @@
 **   parent: wait4 (peak RSS), read the last record, classify the status.
 **
 ** Statuses: ok, timeout, out-of-memory, crash (with the signal), invalid
-** (validator failed), rejected (generator or input refused), algo-failed.
+** (validator failed), rejected (generator or input refused), unsupported
+** (the variant does not apply: monotone on a polygon monotone in no
+** direction), algo-failed.
 ** A failing run never stops the sweep.
 **
 ** The peer `cgal` runs bin/wskel-cgal (CGAL's straight skeleton, unit weights
@@ -169,7 +171,7 @@ static const char usage_text[] =
     "  --quiet             no progress line\n"
     "  --list-variants     registered variants\n"
     "\n"
-    "statuses: ok timeout out-of-memory crash invalid rejected algo-failed\n"
+    "statuses: ok timeout out-of-memory crash invalid rejected unsupported algo-failed\n"
     "exit codes: 0 sweep finished (whatever the statuses), 1 I/O error, 64 usage\n";
 
 /* Split s on commas into l (strdup'ed). */
@@ -597,6 +599,7 @@ static const char *status_of(int what, wk_status st) {
     case WK_EINVALID: return "invalid";
     case WK_EINPUT: case WK_EUSAGE: return what == 0 || what == 1 ? "rejected" : "algo-failed";
     case WK_EALGO: return what == 0 ? "rejected" : "algo-failed";
+    case WK_EUNSUPPORTED: return "unsupported";
     }
     return "algo-failed";
 }
@@ -938,7 +941,7 @@ static void machine_header(FILE *f, int argc, char **argv, const options *o, lon
     fprintf(f, "# columns: variant, family, n (vertices asked), r_req (reflex asked, -1: family "
                "default), k (empty: variant has no k), weights, seed, repeat: the configuration;\n"
                "#   r: actual reflex vertices; status: ok|timeout|out-of-memory|crash|invalid|"
-               "rejected|algo-failed; signal: for crash;\n"
+               "rejected|unsupported|algo-failed; signal: for crash;\n"
                "#   wall_s, cpu_s: the construction alone (cgal: its reported time, no cpu); "
                "peak_rss_bytes: child peak RSS (wait4);\n"
                "#   peak_tracked_bytes: peak bytes through the run allocator during the "
@@ -1184,9 +1187,10 @@ int main(int argc, char **argv) {
     bool tty = !o.quiet && isatty(2);
     double t0 = now_s();
     long finished = 0, next_emit = 0;
-    long counts[8] = {0};
-    static const char *const names[] = {"ok", "timeout", "out-of-memory", "crash", "invalid",
-                                        "rejected", "algo-failed"};
+    long counts[16] = {0};
+    static const char *const names[] = {"ok",       "timeout",     "out-of-memory", "crash",
+                                        "invalid",  "rejected",    "unsupported",   "algo-failed"};
+    enum { N_STATUS = sizeof names / sizeof names[0] };
     result *results = calloc((size_t)n_todo + 1, sizeof *results);
     bool *ready = calloc((size_t)n_todo + 1, sizeof *ready);
     signal(SIGPIPE, SIG_IGN);
@@ -1212,7 +1216,7 @@ int main(int argc, char **argv) {
         {
             ready[i] = true;
             finished++;
-            for (int s = 0; s < 7; s++)
+            for (int s = 0; s < N_STATUS; s++)
                 if (!strcmp(results[i].status, names[s])) counts[s]++;
             while (next_emit < n_todo && ready[next_emit]) {
                 sbuf a = {0}, b = {0};
@@ -1232,7 +1236,7 @@ int main(int argc, char **argv) {
     fmt_dur(now_s() - t0, el, sizeof el);
     if (!o.quiet) {
         fprintf(stderr, "wskel-bench: %ld runs in %s:", n_todo, el);
-        for (int s = 0; s < 7; s++)
+        for (int s = 0; s < N_STATUS; s++)
             if (counts[s]) fprintf(stderr, " %s %ld", names[s], counts[s]);
         fprintf(stderr, " -> %s\n", o.out);
     }

@@ -38,7 +38,8 @@ static const char usage_text[] =
     "  --threads N        OpenMP threads for variants that use them (default 1)\n"
     "  --help             this text\n"
     "\n"
-    "exit codes: 0 ok, 1 invalid input, 2 the algorithm failed,\n"
+    "exit codes: 0 ok, 1 invalid input, 2 the algorithm failed or does not apply\n"
+    "            (monotone on a polygon monotone in no direction),\n"
     "            3 --check found the output invalid, 64 usage error\n";
 
 static int usage_error(const char *fmt, const char *arg) {

@@ -136,6 +136,7 @@ int wk_status_exit_code(wk_status s) {
     case WK_EINPUT: return 1;
     case WK_ENOMEM: return 2;
     case WK_EALGO: return 2;
+    case WK_EUNSUPPORTED: return 2;
     case WK_EINVALID: return 3;
     case WK_EUSAGE: return 64;
     }
@@ -148,6 +149,7 @@ const char *wk_status_name(wk_status s) {
     case WK_EINPUT: return "input rejected";
     case WK_ENOMEM: return "out of memory";
     case WK_EALGO: return "algorithm failed";
+    case WK_EUNSUPPORTED: return "unsupported by this variant";
     case WK_EINVALID: return "invalid output";
     case WK_EUSAGE: return "usage";
     }

@@ -35,6 +35,8 @@ typedef enum wk_status {
     WK_EINPUT,   /* invalid input: CLI exit code 1 */
     WK_ENOMEM,   /* allocation failed or over the memory limit: exit 2 */
     WK_EALGO,    /* the algorithm could not handle the input: exit 2 */
+    WK_EUNSUPPORTED, /* the variant does not apply to this kind of polygon
+                        (monotone: monotone in no direction): exit 2 */
     WK_EINVALID, /* the validator rejected an output: exit 3 */
     WK_EUSAGE    /* bad options: exit 64 */
 } wk_status;

@@ -59,6 +59,10 @@ $BENCH --family notched --n 100 --r 90,10 --quiet --out "$T/rej.csv"
 check "rejected: impossible generator parameters" \
     'grep -q "^naive,notched,100,90,,unit,1,0,0,rejected,.*r=90 > n/2=50" $T/rej.csv'
 check "rejected: the sweep continues" 'grep -q "^naive,notched,100,10,,unit,1,0,10,ok," $T/rej.csv'
+$BENCH --family star,monotone --n 100 --variant monotone --quiet --out "$T/uns.csv"
+check "unsupported: monotone on a star polygon" \
+    'grep -q "^monotone,star,100,.*,unsupported,.*not monotone in any direction" $T/uns.csv'
+check "unsupported: a monotone polygon is ok" 'grep -q "^monotone,monotone,100,.*,ok," $T/uns.csv'
 check "jsonl twin has every row" \
     '[ $(wc -l < $T/crash.jsonl) = 3 ] && grep -q "\"status\":\"crash\",\"signal\":11" $T/crash.jsonl'
 

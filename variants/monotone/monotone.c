@@ -3,7 +3,7 @@
 ** weighted straight skeletons of monotone polygons).
 **
 ** Steps (monotone_internal.h has the shared model): find a direction of
-** monotonicity or refuse (WK_EALGO, CLI exit 2); simulate the lower and the
+** monotonicity or refuse (WK_EUNSUPPORTED, CLI exit 2); simulate the lower and the
 ** upper chain, each extended by rays (edge collapses only); walk the merge
 ** chain from v_w to v_e; clip the chain skeletons to their sides of it;
 ** validate the result.  A monotone polygon the merge cannot certify goes
@@ -28,8 +28,8 @@ static void mono_clear(mono *M) {
     WK_FREE_ARRAY(R, M->ma, M->cap_ma);
 }
 
-/* 001's pipeline on P.  WK_EALGO with *refused set: P is monotone in no
-** direction (the variant's answer, not a failure).  WK_EALGO otherwise: the
+/* 001's pipeline on P.  WK_EUNSUPPORTED with *refused set: P is monotone
+** in no direction (the variant's answer, not a failure).  WK_EALGO otherwise: the
 ** merge could not certify this input (see README.md); the caller falls back.
 ** Validates its own result. */
 static wk_status monotone_merge_run(mono *M, bool *refused, wk_skeleton **out) {
@@ -44,7 +44,7 @@ static wk_status monotone_merge_run(mono *M, bool *refused, wk_skeleton **out) {
     if (!M->L) return R->err.code;
     for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge(P, i, &M->L[i]);
     if ((st = wk_mono_direction(M)) != WK_OK) {
-        *refused = M->not_monotone;
+        *refused = M->not_monotone; /* WK_EUNSUPPORTED */
         return st;
     }
     if (!M->strict) {

@@ -122,8 +122,8 @@ typedef struct mono {
 
 /* direction.c: choose d (a unit vector) in which P is monotone, preferring a
 ** direction with no edge perpendicular to it (M->strict), and set M->d,
-** M->strict, M->vw, M->ve.  WK_EALGO with a message naming a witness and
-** M->not_monotone set when P is monotone in no direction; WK_EALGO alone
+** M->strict, M->vw, M->ve.  WK_EUNSUPPORTED with a message naming a
+** witness and M->not_monotone set when P is monotone in no direction; WK_EALGO alone
 ** when the good directions are too narrow to use with doubles; WK_ENOMEM.
 ** O(n log n). */
 wk_status wk_mono_direction(mono *M);
