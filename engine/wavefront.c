@@ -1054,6 +1054,88 @@ static wk_status check_cycles_sane(wk_wavefront *N) {
     return WK_OK;
 }
 
+/* A cycle that the group left with zero area: every vertex on one line
+** (within a tolerance) and its pieces covering the line from both sides
+** exactly once, as two walls met flat (the group resolution, working with
+** nodes eps_d apart, can leave one with a zero-length piece and an
+** antiparallel vertex: walls at equal levels far from the origin meeting
+** 1e-10 apart in time).  The whole cycle vanishes now: each vertex ends at
+** the node of its place, and each stretch of the line gets one arc between
+** the faces of the piece covering it from either side (the piece's face lies
+** on its right).  *done is false, and nothing is changed, if the cycle is not
+** of that kind. */
+static wk_status collapse_flat_cycle(wk_wavefront *N, uint32_t f, double t, bool *done) {
+    wk_run *R = N->R;
+    *done = false;
+    const wk_offset_line *L = &N->L[N->v[f].ein];
+    wk_point o = wk_wf_pos(&N->v[f], t);
+    double tol = 1e3 * N->eps_d;
+    /* the cycle's places along L's direction (s) and its pieces */
+    uint32_t len = 0, u = f;
+    do {
+        wk_point q = wk_wf_pos(&N->v[u], t);
+        double off = (q.x - o.x) * L->nx + (q.y - o.y) * L->ny;
+        if (fabs(off) > tol || ++len > 64) return WK_OK; /* not flat, or too big to care */
+        u = N->v[u].next;
+    } while (u != f);
+    double sv[64];
+    uint32_t cyc[64];
+    u = f;
+    for (uint32_t i = 0; i < len; i++, u = N->v[u].next) {
+        wk_point q = wk_wf_pos(&N->v[u], t);
+        cyc[i] = u;
+        sv[i] = (q.x - o.x) * L->ux + (q.y - o.y) * L->uy;
+    }
+    /* distinct breakpoints (within tol), sorted */
+    double bp[64];
+    uint32_t nb = 0;
+    for (uint32_t i = 0; i < len; i++) {
+        bool have = false;
+        for (uint32_t j = 0; j < nb; j++) have |= fabs(bp[j] - sv[i]) <= tol;
+        if (!have) bp[nb++] = sv[i];
+    }
+    for (uint32_t i = 1; i < nb; i++)
+        for (uint32_t j = i; j > 0 && bp[j - 1] > bp[j]; j--) {
+            double x = bp[j];
+            bp[j] = bp[j - 1];
+            bp[j - 1] = x;
+        }
+    if (nb < 2) return WK_OK;
+    /* every elementary stretch covered once forwards and once backwards */
+    uint32_t fwd[64], bwd[64];
+    for (uint32_t k = 0; k + 1 < nb; k++) {
+        uint32_t nf = 0, nbk = 0;
+        double mid = 0.5 * (bp[k] + bp[k + 1]);
+        for (uint32_t i = 0; i < len; i++) {
+            double a = sv[i], b = sv[(i + 1) % len];
+            if (mid > fmin(a, b) && mid < fmax(a, b)) {
+                if (b > a) nf++, fwd[k] = N->v[cyc[i]].eout;
+                else nbk++, bwd[k] = N->v[cyc[i]].eout;
+            }
+        }
+        if (nf != 1 || nbk != 1) return WK_OK;
+    }
+    /* nodes at the breakpoints, vertices end there, arcs along the line */
+    uint32_t node[64];
+    for (uint32_t k = 0; k < nb; k++) {
+        wk_point q = {o.x + bp[k] * L->ux, o.y + bp[k] * L->uy};
+        if (wk_skeleton_add_node(R, N->S, q.x + N->origin.x, q.y + N->origin.y, t, &node[k]) != WK_OK)
+            return R->err.code;
+    }
+    for (uint32_t i = 0; i < len; i++) {
+        uint32_t k = 0;
+        while (k + 1 < nb && fabs(bp[k] - sv[i]) > tol) k++;
+        if (terminate(N, cyc[i], node[k]) != WK_OK) return R->err.code;
+    }
+    for (uint32_t k = 0; k + 1 < nb; k++)
+        /* going forwards, the backward piece's face is on the left */
+        if (add_arc(N, node[k], node[k + 1], bwd[k], fwd[k]) != WK_OK) return R->err.code;
+    wk_event e = {t, o.x, o.y, f, WK_NONE, WK_NONE};
+    wk_notify_event(R, WK_EV_VANISH, &e);
+    *done = true;
+    return WK_OK;
+}
+
 static wk_status process_group(wk_wavefront *N, double t) {
     wk_run *R = N->R;
     N->n_forced = 0;
@@ -1072,6 +1154,11 @@ static wk_status process_group(wk_wavefront *N, double t) {
         uint32_t f = N->fresh[i];
         if (N->v[f].alive && N->v[f].vkind == WK_VEL_COLLINEAR && slide(N, f, t) != WK_OK)
             return R->err.code;
+        if (N->v[f].alive && N->v[f].vkind == WK_VEL_ANTIPARALLEL) {
+            bool done;
+            if (collapse_flat_cycle(N, f, t, &done) != WK_OK) return R->err.code;
+            if (done) continue;
+        }
         if (N->v[f].alive && N->v[f].vkind == WK_VEL_ANTIPARALLEL)
             return WK_FAIL(R, WK_EALGO, N->P->name, 0,
                            "wavefront: antiparallel wavefront vertex at t = %.17g", t);

@@ -5,7 +5,7 @@ Four tests: the files of tests/data/degenerate; generated integer-grid
 polygons; real-like polygons (fractal coastlines, glyph outlines, a
 horseshoe, a tiny coastline 1e6 from the origin); monotone polygons turned
 in random directions, with runs of collinear vertices (the monotone variant
-must not refuse them).  One known failure is listed in KNOWN_FAILURES.
+must not refuse them).  Known failures, if any, are listed in KNOWN_FAILURES.
 
 Polygons on small integer grids are as degenerate as real inputs get:
 parallel and collinear edges, equal lengths, rays through vertices, several
@@ -41,12 +41,12 @@ WSKEL = os.environ.get("WSKEL_BIN", os.path.join(ROOT, "bin", "wskel"))
 CASES = int(os.environ.get("WSKEL_DEGENERATE_CASES", "2000"))
 REAL_CASES = int(os.environ.get("WSKEL_REAL_CASES", "24"))
 MONO_CASES = int(os.environ.get("WSKEL_MONO_CASES", "400"))
-# Known open failure of the reference (and so of every variant): walls at
-# equal levels ("levels" style) 1e5 from the origin meet 1e-10 apart in time,
-# beyond the engine's time tolerance, and a group leaves two antiparallel
-# pieces adjacent ("antiparallel wavefront vertex").  The test asserts that
-# exactly these cases fail, and in that way, so a fix shows too.
-KNOWN_FAILURES = {150: "antiparallel wavefront vertex"}
+# Known open failures of the reference (and so of every variant), seed ->
+# the text of the failure: the test asserts that exactly these fail, and in
+# that way, so a fix shows too.  Empty now: seed 150 ("antiparallel
+# wavefront vertex", walls at equal levels 1e5 from the origin) was fixed by
+# collapsing flat cycles and is kept as tests/data/degenerate/flat_cycle_far.wpoly.
+KNOWN_FAILURES = {}
 DATA = os.path.join(ROOT, "tests", "data", "degenerate")
 VARIANTS = [["arrangement", "--k", "1"], ["arrangement", "--k", "max"], ["monotone"]]
 
