@@ -5,7 +5,9 @@
 ** failed run leaves no partial file.  An existing FILE that is not a regular
 ** file (/dev/null, a FIFO, a terminal) is written directly: renaming over it
 ** would replace the device node with a plain file.  Exit codes: 0 ok, 1 invalid input,
-** 2 the algorithm failed, 3 --check found the output invalid, 64 usage.
+** 2 the algorithm failed, 3 the validator found the output invalid (every
+** skeleton is validated before it is written, unless --no-check: a wrong
+** skeleton is never written silently), 64 usage.
 */
 #define _POSIX_C_SOURCE 200809L
 #include "wskel.h"
@@ -30,7 +32,9 @@ static const char usage_text[] =
     "  --format F         json (default), text, svg, obj (roof), vtp (VTK PolyData)\n"
     "  -o FILE            write to FILE instead of stdout (atomically)\n"
     "  --offsets T1,T2..  svg only: draw offset curves at these times\n"
-    "  --check            validate the skeleton (exit 3 if invalid)\n"
+    "  --check            validate the skeleton, exit 3 and no output if invalid\n"
+    "                     (the default; --stats prints the validator's figures)\n"
+    "  --no-check         skip the validation (huge inputs, timing runs)\n"
     "  --stats            print counters, time and peak tracked bytes to stderr\n"
     "  --collinear RULE   parallel edges of different weight meeting collinearly:\n"
     "                     'lower' (default, the lower weight edge survives, as in\n"
@@ -40,7 +44,7 @@ static const char usage_text[] =
     "\n"
     "exit codes: 0 ok, 1 invalid input, 2 the algorithm failed or does not apply\n"
     "            (monotone on a polygon monotone in no direction),\n"
-    "            3 --check found the output invalid, 64 usage error\n";
+    "            3 the output failed validation, 64 usage error\n";
 
 static int usage_error(const char *fmt, const char *arg) {
     fprintf(stderr, "wskel: ");
@@ -82,7 +86,7 @@ static int parse_offsets(const char *s, double **out, uint32_t *n) {
 int main(int argc, char **argv) {
     const char *variant = "naive", *format = "json", *outpath = NULL, *input = NULL;
     const char *offsets_arg = NULL;
-    bool check = false, stats = false, k_given = false;
+    bool check = true, stats = false, k_given = false;
     uint32_t k = 1;
     wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
     int threads = 1;
@@ -131,6 +135,8 @@ int main(int argc, char **argv) {
             offsets_arg = argv[++i];
         } else if (!strcmp(a, "--check")) {
             check = true;
+        } else if (!strcmp(a, "--no-check")) {
+            check = false;
         } else if (!strcmp(a, "--stats")) {
             stats = true;
         } else if (!strcmp(a, "--collinear")) {

@@ -238,6 +238,16 @@ run "$WSKEL" --check "$SQUARE"
 expect "--check on a good input exits 0" 0
 if [ -z "$ERR" ]; then pass "--check alone is silent on stderr"
 else fail "--check alone is silent on stderr" "stderr: $ERR"; fi
+# Every skeleton is validated before it is written: a known invalid output
+# (tests/data/known) gives exit 3 and no file, --no-check writes it.
+KNOWN=tests/data/known/turned_grid_t0_node.wpoly
+rm -f "$TMP/known.json"
+run "$WSKEL" -o "$TMP/known.json" "$KNOWN"
+expect "an invalid skeleton is not written (default validation)" 3
+if [ ! -e "$TMP/known.json" ]; then pass "no output file after a failed validation"
+else fail "no output file after a failed validation" "$TMP/known.json exists"; fi
+run "$WSKEL" --no-check -o "$TMP/known.json" "$KNOWN"
+expect "--no-check writes it" 0
 for rule in lower higher; do
   run "$WSKEL" --check --collinear "$rule" "$WEIGHTED"
   expect "--collinear $rule" 0
