@@ -1187,10 +1187,10 @@ int main(int argc, char **argv) {
     bool tty = !o.quiet && isatty(2);
     double t0 = now_s();
     long finished = 0, next_emit = 0;
-    long counts[16] = {0};
     static const char *const names[] = {"ok",       "timeout",     "out-of-memory", "crash",
                                         "invalid",  "rejected",    "unsupported",   "algo-failed"};
     enum { N_STATUS = sizeof names / sizeof names[0] };
+    long counts[N_STATUS] = {0};
     result *results = calloc((size_t)n_todo + 1, sizeof *results);
     bool *ready = calloc((size_t)n_todo + 1, sizeof *ready);
     signal(SIGPIPE, SIG_IGN);

@@ -49,19 +49,18 @@ wk_point wk_polygon_centre(const wk_polygon *P) {
     return (wk_point){0.5 * lo.x + 0.5 * hi.x, 0.5 * lo.y + 0.5 * hi.y};
 }
 
+/* The parallel bar for two directions with this dot product. */
+static double parallel_bar(double dot) { return dot > 0 ? WK_PARALLEL_SIN : WK_ANTIPARALLEL_SIN; }
+
 wk_velocity_kind wk_vertex_velocity(const wk_offset_line *a, const wk_offset_line *b,
                                     wk_point *v) {
     double det = a->nx * b->ny - a->ny * b->nx;
     double dot = a->nx * b->nx + a->ny * b->ny;
-    /* antiparallel only at the old bar: the group resolution cancels
-    ** antiparallel pieces that meet, and an antiparallel vertex left by a
-    ** group is a failure; at 1e-9 seven small turned grid polygons failed
-    ** that way (tests/test_degenerate.py) */
-    if (dot < 0 && fabs(det) <= WK_ANTIPARALLEL_SIN) {
-        v->x = v->y = 0;
-        return WK_VEL_ANTIPARALLEL;
-    }
-    if (dot > 0 && fabs(det) <= WK_PARALLEL_SIN) {
+    if (fabs(det) <= parallel_bar(dot)) {
+        if (dot < 0) {
+            v->x = v->y = 0;
+            return WK_VEL_ANTIPARALLEL;
+        }
         if (a->w == b->w) {
             v->x = a->w * 0.5 * (a->nx + b->nx);
             v->y = a->w * 0.5 * (a->ny + b->ny);
@@ -80,7 +79,7 @@ bool wk_offset_lines_meet(const wk_offset_line *a, const wk_offset_line *b, doub
                           wk_point *p) {
     double det = a->nx * b->ny - a->ny * b->nx;
     double dot = a->nx * b->nx + a->ny * b->ny;
-    if (fabs(det) <= (dot > 0 ? WK_PARALLEL_SIN : WK_ANTIPARALLEL_SIN)) return false;
+    if (fabs(det) <= parallel_bar(dot)) return false;
     double ca = a->c + a->w * t, cb = b->c + b->w * t;
     p->x = (ca * b->ny - a->ny * cb) / det;
     p->y = (a->nx * cb - ca * b->nx) / det;
@@ -90,7 +89,7 @@ bool wk_offset_lines_meet(const wk_offset_line *a, const wk_offset_line *b, doub
 bool wk_is_reflex_turn(const wk_offset_line *a, const wk_offset_line *b) {
     double cross = a->ux * b->uy - a->uy * b->ux;
     double dot = a->ux * b->ux + a->uy * b->uy;
-    return cross < -(dot > 0 ? WK_PARALLEL_SIN : WK_ANTIPARALLEL_SIN);
+    return cross < -parallel_bar(dot);
 }
 
 bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
@@ -116,4 +115,16 @@ bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
     p->y = dy / det;
     *t = dt / det;
     return isfinite(p->x) && isfinite(p->y) && isfinite(*t);
+}
+
+wk_velocity_kind wk_vertex_start(const wk_offset_line *L, uint32_t ein, uint32_t eout, wk_point p,
+                                 double t, double snap, wk_point *p0, wk_point *vel, bool *reflex) {
+    wk_velocity_kind k = wk_vertex_velocity(&L[ein], &L[eout], vel);
+    *reflex = k == WK_VEL_REGULAR && wk_is_reflex_turn(&L[ein], &L[eout]);
+    *p0 = p;
+    wk_point q;
+    if (k == WK_VEL_REGULAR && t > 0 && wk_offset_lines_meet(&L[ein], &L[eout], t, &q) &&
+        (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y) <= snap * snap)
+        *p0 = q;
+    return k;
 }

@@ -51,6 +51,14 @@ bool wk_offset_lines_meet(const wk_offset_line *a, const wk_offset_line *b, doub
 /* The point and time where three offset lines meet (an event defined by its
 ** input edges, as in CGAL's trisegments, so no rounding piles up from
 ** earlier events).  False if the system is (nearly) singular. */
+/* A wavefront vertex between edges ein and eout born at p at time t: its
+** kind (the return value), velocity and reflexness, and *p0 = p snapped onto
+** both offset lines where they meet within `snap` of p (regular vertices,
+** t > 0): later constructions then depend on the input lines, not on the
+** rounding of the event that made the vertex. */
+wk_velocity_kind wk_vertex_start(const wk_offset_line *L, uint32_t ein, uint32_t eout, wk_point p,
+                                 double t, double snap, wk_point *p0, wk_point *vel, bool *reflex);
+
 bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
                          const wk_offset_line *c, wk_point *p, double *t);
 /* True if turning from edge direction a to edge direction b is a right turn

@@ -2,8 +2,8 @@
 ** split_brute.c: the brute-force split finder (engine/wavefront.h): a
 ** reflex vertex is tested against every piece of its wavefront cycle.
 ** Shared because two variants use it: naive (it is the reference) and
-** monotone (its fallback where 001's merge cannot certify a weighted
-** result).  Cost: O(cycle) per reflex vertex whose target disappears,
+** monotone (its fallback where 001's merge cannot certify its result).
+** Cost: O(cycle) per reflex vertex whose target disappears,
 ** O(new pieces) per reflex vertex of a touched cycle otherwise.
 */
 #include "wavefront.h"

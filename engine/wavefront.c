@@ -68,7 +68,6 @@ static uint32_t new_vertex(wk_wavefront *N, uint32_t ein, uint32_t eout, wk_poin
     memset(x, 0, sizeof *x);
     x->ein = ein;
     x->eout = eout;
-    x->p0 = p;
     x->t0 = t;
     x->node = node;
     x->alive = 1;
@@ -77,15 +76,9 @@ static uint32_t new_vertex(wk_wavefront *N, uint32_t ein, uint32_t eout, wk_poin
     x->at = WK_NONE;
     x->ev_kind = WK_WF_NONE;
     x->ev_t = INFINITY;
-    x->vkind = (uint8_t)wk_vertex_velocity(&N->L[ein], &N->L[eout], &x->vel);
-    x->reflex = x->vkind == WK_VEL_REGULAR && wk_is_reflex_turn(&N->L[ein], &N->L[eout]);
-    /* Snap the start onto both offset lines when that is well conditioned:
-    ** later constructions then depend on the input lines, not on the
-    ** rounding of the event that created the vertex. */
-    wk_point q;
-    if (x->vkind == WK_VEL_REGULAR && t > 0 && wk_offset_lines_meet(&N->L[ein], &N->L[eout], t, &q) &&
-        dist2(q, p) <= N->eps_d * N->eps_d)
-        x->p0 = q;
+    bool reflex;
+    x->vkind = (uint8_t)wk_vertex_start(N->L, ein, eout, p, t, N->eps_d, &x->p0, &x->vel, &reflex);
+    x->reflex = reflex;
     return id;
 }
 

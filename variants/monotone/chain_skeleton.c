@@ -95,7 +95,6 @@ static uint32_t new_trace(sim *S, uint32_t ein, uint32_t eout, wk_point p, doubl
     memset(x, 0, sizeof *x);
     x->ein = ein;
     x->eout = eout;
-    x->p0 = p;
     x->t0 = t;
     x->t1 = INFINITY;
     x->start = node;
@@ -103,12 +102,11 @@ static uint32_t new_trace(sim *S, uint32_t ein, uint32_t eout, wk_point p, doubl
     x->prev = x->next = WK_NONE;
     x->alive = 1;
     x->ev_t = INFINITY;
-    x->kind = (uint8_t)wk_vertex_velocity(&L[ein], &L[eout], &x->vel);
-    x->reflex = x->kind == WK_VEL_REGULAR && wk_is_reflex_turn(&L[ein], &L[eout]);
-    wk_point q;
-    if (x->kind == WK_VEL_REGULAR && t > 0 && wk_offset_lines_meet(&L[ein], &L[eout], t, &q) &&
-        dist2(q, p) <= 1e6 * S->M->eps_d * S->M->eps_d) /* within 1e3 eps_d: see refine */
-        x->p0 = q;
+    bool reflex;
+    /* snapped within 1e3 eps_d: see refine */
+    x->kind = (uint8_t)wk_vertex_start(L, ein, eout, p, t, 1e3 * S->M->eps_d, &x->p0, &x->vel,
+                                       &reflex);
+    x->reflex = reflex;
     return id;
 }
 

@@ -202,7 +202,6 @@ wk_status wk_mono_direction(mono *M) {
             if (hi - lo > best_w) best_w = hi - lo, best_lo = lo, best_hi = hi;
         }
         if (best_w < 0) {
-            M->not_monotone = true;
             st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
                          "monotone: the polygon is not monotone in any direction (no direction "
                          "suits all %u reflex vertices at once; at most %u do)",

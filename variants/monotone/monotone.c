@@ -28,11 +28,11 @@ static void mono_clear(mono *M) {
     WK_FREE_ARRAY(R, M->ma, M->cap_ma);
 }
 
-/* 001's pipeline on P.  WK_EUNSUPPORTED with *refused set: P is monotone
-** in no direction (the variant's answer, not a failure).  WK_EALGO otherwise: the
+/* 001's pipeline on P.  WK_EUNSUPPORTED: P is monotone in no direction (the
+** variant's answer, not a failure).  WK_EALGO otherwise: the
 ** merge could not certify this input (see README.md); the caller falls back.
 ** Validates its own result. */
-static wk_status monotone_merge_run(mono *M, bool *refused, wk_skeleton **out) {
+static wk_status monotone_merge_run(mono *M, wk_skeleton **out) {
     wk_run *R = M->R;
     const wk_polygon *P = M->P;
     double wmax = 0;
@@ -43,10 +43,7 @@ static wk_status monotone_merge_run(mono *M, bool *refused, wk_skeleton **out) {
     M->L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
     if (!M->L) return R->err.code;
     for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge(P, i, &M->L[i]);
-    if ((st = wk_mono_direction(M)) != WK_OK) {
-        *refused = M->not_monotone; /* WK_EUNSUPPORTED */
-        return st;
-    }
+    if ((st = wk_mono_direction(M)) != WK_OK) return st;
     if (!M->strict) {
         /* Walls perpendicular to the sweep with weights: the merge walk's
         ** local decisions were seen to pass the validator with a skeleton
@@ -99,10 +96,9 @@ static wk_status monotone_run(wk_run *R, const wk_polygon *P, wk_skeleton **out)
     M.R = R;
     M.P = P;
     *out = NULL;
-    bool refused = false;
-    wk_status st = monotone_merge_run(&M, &refused, out);
+    wk_status st = monotone_merge_run(&M, out);
     mono_clear(&M);
-    if (st != WK_EALGO || refused) return st;
+    if (st != WK_EALGO) return st; /* ok, no memory, or WK_EUNSUPPORTED */
     memset(&R->err, 0, sizeof R->err);
     wk_event ev = {0, 0, 0, WK_NONE, WK_NONE, WK_NONE};
     wk_notify_event(R, WK_EV_FALLBACK, &ev);

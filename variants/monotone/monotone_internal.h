@@ -108,7 +108,6 @@ typedef struct mono {
     wk_offset_line *L;      /* per edge */
     wk_point d;             /* east (unit) */
     bool strict;            /* no edge is perpendicular to d */
-    bool not_monotone;      /* direction.c proved P monotone in no direction */
     uint32_t vw, ve;        /* westmost / eastmost vertex (chain ends) */
     double eps_d, eps_t;    /* the engine's tolerance policy (wskel.h) */
     mono_chain ch[2];       /* 0: lower, 1: upper */
@@ -123,8 +122,8 @@ typedef struct mono {
 /* direction.c: choose d (a unit vector) in which P is monotone, preferring a
 ** direction with no edge perpendicular to it (M->strict), and set M->d,
 ** M->strict, M->vw, M->ve.  WK_EUNSUPPORTED with a message naming a
-** witness and M->not_monotone set when P is monotone in no direction; WK_EALGO alone
-** when the good directions are too narrow to use with doubles; WK_ENOMEM.
+** witness when P is monotone in no direction; WK_EALGO when the good
+** directions are too narrow to use with doubles; WK_ENOMEM.
 ** O(n log n). */
 wk_status wk_mono_direction(mono *M);
 
