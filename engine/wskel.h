@@ -63,6 +63,8 @@ typedef struct wk_error {
 /* Lua's allocator shape: old_size is the size the caller allocated, so the
 ** statistics need no block headers.  new_size == 0 frees and returns NULL. */
 typedef void *(*wk_realloc_fn)(void *ud, void *p, size_t old_size, size_t new_size);
+/* The libc backend (the default). */
+void *wk_libc_realloc(void *ud, void *p, size_t old_size, size_t new_size);
 
 typedef struct wk_alloc {
     wk_realloc_fn fn;     /* backend; libc by default */
