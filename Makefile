@@ -52,7 +52,7 @@ $(LIB): $(LIB_SRC:%.c=$(B)/%.o)
 $(LIBASAN): $(LIB_SRC:%.c=$(BA)/%.o)
 	@rm -f $@; ar rcs $@ $^
 
-bin/wskel: $(B)/cli/wskel.o $(LIB)
+bin/wskel: $(B)/cli/main.o $(LIB)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 bin/wskel-gen: $(B)/bench/wskel_gen.o $(LIB)
@@ -69,7 +69,7 @@ $(B)/tests/run_tests: $(TEST_SRC:%.c=$(B)/%.o) $(LIB)
 	$(CC) $(CFLAGS) $^ -o $@ -lcriterion $(LDLIBS)
 $(BA)/tests/run_tests: $(TEST_SRC:%.c=$(BA)/%.o) $(LIBASAN)
 	$(CC) $(CFLAGS) -fsanitize=address,undefined $^ -o $@ -lcriterion $(LDLIBS)
-$(BA)/wskel: $(BA)/cli/wskel.o $(LIBASAN)
+$(BA)/wskel: $(BA)/cli/main.o $(LIBASAN)
 	$(CC) $(CFLAGS) -fsanitize=address,undefined $^ -o $@ $(LDLIBS)
 
 # Unit and property tests, then the same under ASan/UBSan, then the

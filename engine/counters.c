@@ -1,66 +1,78 @@
 /*
-** counters.c: the counting observer, the only code that writes wk_counters.
+** counters.c: the counter declarations (the engine's list in wskel.h, each
+** variant's in its wk_variant) and the counting observer, the only code
+** that writes wk_counters.
 */
-#include "wskel.h"
+#include "variant.h"
 
-/* ---- counting observer: the only writer of wk_counters ---- */
+#include <string.h>
 
-static void count_event(void *ud, wk_event_kind kind, const wk_event *e) {
-    wk_counters *c = ud;
-    switch (kind) {
-    case WK_EV_EDGE: c->edge_events++; break;
-    case WK_EV_SPLIT: c->split_events++; break;
-    case WK_EV_MULTI_SPLIT: c->multi_split_events++; break;
-    case WK_EV_SWITCH: c->switch_events++; break;
-    case WK_EV_START: c->start_events++; break;
-    case WK_EV_REFLEX_EDGE: c->reflex_preserving_edge_events++; break;
-    case WK_EV_VANISH: c->vanishing_components++; break;
-    case WK_EV_GROUP: c->simultaneous_event_groups++; break;
-    case WK_EV_COLLINEAR: c->collinear_resolutions++; break;
-    case WK_EV_CHAIN_EDGE:
-        c->edge_events++;
-        if (e->c == 0) c->chain_edge_events_lower++;
-        else c->chain_edge_events_upper++;
-        break;
-    case WK_EV_MERGE_VERTEX: c->merge_chain_vertices++; break;
-    case WK_EV_MERGE_CELL: c->merge_cells_visited++; break;
-    case WK_EV_FALLBACK: c->reference_fallbacks++; break;
-    case WK_EV_BRUTE_SPLIT: c->brute_force_split_scans++; break;
-    case WK_EV_KIND_COUNT: break;
-    }
-}
-static void count_queue(void *ud, wk_queue_op op) {
-    wk_counters *c = ud;
-    switch (op) {
-    case WK_Q_PUSH: c->queue_pushes++; break;
-    case WK_Q_POP: c->queue_pops++; break;
-    case WK_Q_UPDATE: c->queue_updates++; break;
-    case WK_Q_REMOVE: c->queue_removes++; break;
-    }
-}
-static void count_cache(void *ud, wk_cache_op op) {
-    wk_counters *c = ud;
-    switch (op) {
-    case WK_C_HIT: c->cache_hits++; break;
-    case WK_C_MISS: c->cache_misses++; break;
-    case WK_C_REFILL: c->cache_refills++; break;
-    case WK_C_INVALIDATE: c->cache_invalidations++; break;
-    }
-}
-static void count_arrangement(void *ud, wk_arr_op op, uint64_t n) {
-    wk_counters *c = ud;
-    switch (op) {
-    case WK_A_INSERT: c->arrangement_inserts += n; break;
-    case WK_A_REMOVE: c->arrangement_removes += n; break;
-    case WK_A_QUERY: c->intersection_queries += n; break;
-    case WK_A_SCANNED: c->segments_scanned += n; break;
-    case WK_A_INITIAL_CROSSING: c->arrangement_crossings_initial += n; break;
-    }
-}
-static void count_exact(void *ud) { ((wk_counters *)ud)->exact_fallbacks++; }
-static void count_stale(void *ud) { ((wk_counters *)ud)->stale_events++; }
-
-const wk_observer wk_observer_counting = {
-    count_event, count_queue, count_cache, count_arrangement, count_exact, count_stale, NULL,
+static const wk_counter_def engine_counters[WK_ENGINE_COUNTERS] = {
+#define WK_ENGINE_COUNTER_DEF(name, meaning) {#name, meaning},
+    WK_ENGINE_COUNTER_LIST(WK_ENGINE_COUNTER_DEF)
+#undef WK_ENGINE_COUNTER_DEF
 };
 
+uint32_t wk_counter_count(const wk_variant *V) {
+    return WK_ENGINE_COUNTERS + (V ? V->n_counters : 0);
+}
+
+const wk_counter_def *wk_counter_def_at(const wk_variant *V, uint32_t id) {
+    if (id < WK_ENGINE_COUNTERS) return &engine_counters[id];
+    if (V && id - WK_ENGINE_COUNTERS < V->n_counters) return &V->counters[id - WK_ENGINE_COUNTERS];
+    return NULL;
+}
+
+bool wk_counter_find(const wk_variant *V, const char *name, uint32_t *id) {
+    for (uint32_t i = 0; i < wk_counter_count(V); i++)
+        if (strcmp(wk_counter_def_at(V, i)->name, name) == 0) {
+            *id = i;
+            return true;
+        }
+    return false;
+}
+
+bool wk_counter_lookup(const wk_run *R, const char *name, uint64_t *value) {
+    uint32_t id;
+    if (!wk_counter_find(R->variant, name, &id)) return false;
+    *value = R->counters.c[id];
+    return true;
+}
+
+/* Adds name to names[0..*n) unless it is there (a name two variants share
+** is one column). */
+static void add_name(const char **names, uint32_t cap, uint32_t *n, const char *name) {
+    for (uint32_t j = 0; j < *n && j < cap; j++)
+        if (strcmp(names[j], name) == 0) return;
+    if (*n < cap) names[*n] = name;
+    (*n)++;
+}
+
+uint32_t wk_counter_union(const char **names, uint32_t cap) {
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < WK_ENGINE_COUNTERS; i++) add_name(names, cap, &n, engine_counters[i].name);
+    for (size_t v = 0; wk_variant_at(v); v++) {
+        const wk_variant *V = wk_variant_at(v);
+        for (uint32_t j = 0; j < V->n_counters; j++) add_name(names, cap, &n, V->counters[j].name);
+    }
+    return n;
+}
+
+/* ---- the counting observer ---- */
+
+static void count_event(void *ud, uint32_t counter, const wk_event *e) {
+    (void)e;
+    if (counter < WK_COUNTERS_MAX) ((wk_counters *)ud)->c[counter]++;
+}
+
+static void count_work(void *ud, uint32_t counter, uint64_t n) {
+    if (counter < WK_COUNTERS_MAX) ((wk_counters *)ud)->c[counter] += n;
+}
+
+const wk_observer wk_observer_counting = {count_event, count_work, NULL};
+
+/* ---- what callers may ask of a variant ---- */
+
+const char *wk_variant_name(const wk_variant *V) { return V->name; }
+const char *wk_variant_summary(const wk_variant *V) { return V->summary; }
+unsigned wk_variant_flags(const wk_variant *V) { return V->flags; }

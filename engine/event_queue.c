@@ -85,11 +85,11 @@ wk_status wk_event_queue_set(wk_run *R, wk_event_queue *Q, uint32_t id, wk_event
     if (i == WK_NONE) {
         place(Q, Q->size++, id);
         sift_up(Q, Q->size - 1);
-        wk_notify_queue(R, WK_Q_PUSH);
+        wk_count(R, WK_COUNTER_queue_pushes, 1);
     } else {
         sift_up(Q, i);
         sift_down(Q, Q->pos[id]);
-        wk_notify_queue(R, WK_Q_UPDATE);
+        wk_count(R, WK_COUNTER_queue_updates, 1);
     }
     return WK_OK;
 }
@@ -105,7 +105,7 @@ void wk_event_queue_remove(wk_run *R, wk_event_queue *Q, uint32_t id) {
         sift_up(Q, i);
         sift_down(Q, Q->pos[moved]);
     }
-    wk_notify_queue(R, WK_Q_REMOVE);
+    wk_count(R, WK_COUNTER_queue_removes, 1);
 }
 
 uint32_t wk_event_queue_peek(const wk_event_queue *Q) { return Q->size ? Q->heap[0] : WK_NONE; }
@@ -119,7 +119,7 @@ uint32_t wk_event_queue_pop(wk_run *R, wk_event_queue *Q) {
         place(Q, 0, Q->heap[Q->size]);
         sift_down(Q, 0);
     }
-    wk_notify_queue(R, WK_Q_POP);
+    wk_count(R, WK_COUNTER_queue_pops, 1);
     return id;
 }
 

@@ -1,7 +1,7 @@
 /*
 ** ray_shoot.c: the uniform bucket grid and ray shooting against a polygon's
 ** boundary (000, section 3.1: each segment of A(P) ends where its ray first
-** meets the boundary).  See the design note in arrangement.h.
+** meets the boundary).  See the design note in ray_shoot.h.
 **
 ** Invariants of a built wk_seg_grid: start[0] = 0, start is non-decreasing,
 ** start[n_cells] = n_items; the ids of cell c are increasing; segment i is
@@ -23,7 +23,7 @@
 ** distance <= best was tested: the result is the minimum over all edges
 ** under the same total order as the brute force, i.e. the same bits.
 */
-#include "arrangement.h"
+#include "ray_shoot.h"
 
 #include <math.h>
 #include <string.h>
@@ -226,7 +226,7 @@ static inline void offer(const wk_ray_hit *h, wk_ray_hit *best, bool *found) {
 }
 
 /* Test edge e against the ray o + t u (see the tolerance rules in
-** arrangement.h).  Every quantity of a vertex candidate is computed from
+** ray_shoot.h).  Every quantity of a vertex candidate is computed from
 ** the vertex alone, so both edges at a vertex offer the same bits. */
 static inline void test_edge(const wk_polygon *P, double tol, wk_point o, wk_point u, uint32_t skip,
                              uint32_t e, wk_ray_hit *best, bool *found) {

@@ -8,7 +8,7 @@
 ** and later failures never overwrite the first.
 */
 #define _POSIX_C_SOURCE 200809L
-#include "wskel.h"
+#include "variant.h"
 
 #include <stdarg.h>
 #include <stdlib.h>
@@ -23,7 +23,6 @@ void wk_run_init(wk_run *R) {
     R->alloc.fail_after = -1;
     R->obs = &wk_observer_counting;
     R->obs_ud = &R->counters;
-    R->opt.variant = "naive";
     R->opt.k = 1;
     R->opt.collinear = WK_COLLINEAR_LOWER;
     R->opt.threads = 1;
@@ -33,6 +32,11 @@ void wk_run_init(wk_run *R) {
 size_t wk_run_close(wk_run *R) { return R->alloc.live; }
 
 void wk_run_reset_peak(wk_run *R) { R->alloc.peak = R->alloc.live; }
+
+void wk_run_clear_error(wk_run *R) {
+    memset(&R->err, 0, sizeof R->err);
+    R->err.code = WK_OK;
+}
 
 wk_status wk_fail(wk_run *R, wk_status code, const char *input, long input_line,
                   const char *src_file, int src_line, const char *fmt, ...) {
@@ -92,6 +96,7 @@ wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skele
     *out = NULL;
     size_t live0 = R->alloc.live;
     wk_run_reset_peak(R);
+    R->variant = V;
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     wk_status st = V->run(R, P, out);

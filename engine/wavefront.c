@@ -818,7 +818,7 @@ static wk_status slide(wk_wavefront *N, uint32_t vi, double t) {
         if (run_node(N, i - 1, t, &a) != WK_OK || run_node(N, i, t, &b) != WK_OK) return R->err.code;
         if (add_arc(N, a, b, ext, e) != WK_OK) return R->err.code;
         wk_event ev = {t, 0, 0, e, ext, WK_NONE};
-        wk_notify_event(R, WK_EV_COLLINEAR, &ev);
+        wk_notify_event(R, WK_COUNTER_collinear_resolutions, &ev);
         changed = true;
     }
     if (!changed) return WK_OK;
@@ -934,7 +934,7 @@ static wk_status commit(wk_wavefront *N, double t) {
         if (mark_fresh(N, tail) != WK_OK) return R->err.code;
     }
     wk_event e = {t, 0, 0, WK_NONE, WK_NONE, WK_NONE};
-    wk_notify_event(R, WK_EV_GROUP, &e);
+    wk_notify_event(R, WK_COUNTER_simultaneous_event_groups, &e);
     return WK_OK;
 }
 
@@ -953,9 +953,9 @@ static wk_status count_group(wk_wavefront *N, double t) {
     for (uint32_t k = 0; k < N->n_cl; k++) {
         const wk_wf_cluster *c = &N->cl[k];
         wk_event e = {t, c->p.x, c->p.y, k, c->arrive, c->reflex};
-        if (c->reflex >= 2) wk_notify_event(R, WK_EV_MULTI_SPLIT, &e);
-        else if (c->reflex == 1 && c->pinches) wk_notify_event(R, WK_EV_SPLIT, &e);
-        else if (c->arrive >= 2) wk_notify_event(R, WK_EV_EDGE, &e);
+        if (c->reflex >= 2) wk_notify_event(R, WK_COUNTER_multi_split_events, &e);
+        else if (c->reflex == 1 && c->pinches) wk_notify_event(R, WK_COUNTER_split_events, &e);
+        else if (c->arrive >= 2) wk_notify_event(R, WK_COUNTER_edge_events, &e);
     }
     /* a touched cycle vanished if every vertex of it arrived at a node and
     ** none of its nodes starts a new vertex (flag 1: alive) */
@@ -969,7 +969,7 @@ static wk_status count_group(wk_wavefront *N, double t) {
     for (uint32_t c = 0; c < N->n_cyc; c++) {
         if (N->cycflag[c]) continue;
         wk_event e = {t, 0, 0, c, WK_NONE, WK_NONE};
-        wk_notify_event(R, WK_EV_VANISH, &e);
+        wk_notify_event(R, WK_COUNTER_vanishing_components, &e);
     }
     /* an edge event (no piece cut) whose one new vertex is reflex: 000's
     ** reflex-preserving edge event */
@@ -979,7 +979,7 @@ static wk_status count_group(wk_wavefront *N, double t) {
         if (p->vertex == WK_NONE || c->pinches || c->arrive < 2 || c->pairs != 1) continue;
         if (!N->v[p->vertex].reflex) continue;
         wk_event e = {t, c->p.x, c->p.y, p->node, c->arrive, c->reflex};
-        wk_notify_event(R, WK_EV_REFLEX_EDGE, &e);
+        wk_notify_event(R, WK_COUNTER_reflex_preserving_edge_events, &e);
     }
     return WK_OK;
 }
@@ -1124,7 +1124,7 @@ static wk_status collapse_flat_cycle(wk_wavefront *N, uint32_t f, double t, bool
         /* going forwards, the backward piece's face is on the left */
         if (add_arc(N, node[k], node[k + 1], bwd[k], fwd[k]) != WK_OK) return R->err.code;
     wk_event e = {t, o.x, o.y, f, WK_NONE, WK_NONE};
-    wk_notify_event(R, WK_EV_VANISH, &e);
+    wk_notify_event(R, WK_COUNTER_vanishing_components, &e);
     *done = true;
     return WK_OK;
 }

@@ -120,8 +120,6 @@ typedef struct wk_split_finder {
                            the finder reschedules what it changes */
 } wk_split_finder;
 
-/* The brute-force finder (split_brute.c): every piece of the cycle. */
-extern const wk_split_finder wk_split_finder_brute_force;
 
 /* Run the simulation on P with the given finder; on success *out is the
 ** skeleton (caller frees).  No skeleton on failure. */

@@ -76,12 +76,10 @@ wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skelet
         fputs("null", f);
     } else {
         fputc('{', f);
-        if (info->counters) {
-#define WK_JSON_COUNTER(name) \
-    fprintf(f, "\"" #name "\":%llu,", (unsigned long long)info->counters->name);
-            WK_COUNTER_LIST(WK_JSON_COUNTER)
-#undef WK_JSON_COUNTER
-        }
+        if (info->counters)
+            for (uint32_t i = 0; i < wk_counter_count(info->counters_of); i++)
+                fprintf(f, "\"%s\":%llu,", wk_counter_def_at(info->counters_of, i)->name,
+                        (unsigned long long)info->counters->c[i]);
         fputs("\"time_s\":", f);
         put_double(f, info->time_s);
         fprintf(f, ",\"peak_bytes\":%zu}", info->peak_bytes);

@@ -80,89 +80,85 @@ typedef struct wk_alloc {
 
 /* ------------------------------------------------------------- counters */
 
-/* X-macro list so that writers, the harness and the regression check can
-** enumerate the counters by name.  Counters hold counts only (no times, no
-** addresses), so they are deterministic. */
-#define WK_COUNTER_LIST(X)                 \
-    X(edge_events)                         \
-    X(split_events)                        \
-    X(multi_split_events)                  \
-    X(switch_events)                       \
-    X(start_events)                        \
-    X(reflex_preserving_edge_events)       \
-    X(vanishing_components)                \
-    X(simultaneous_event_groups)           \
-    X(collinear_resolutions)               \
-    X(chain_edge_events_lower)             \
-    X(chain_edge_events_upper)             \
-    X(merge_chain_vertices)                \
-    X(merge_cells_visited)                 \
-    X(reference_fallbacks)                 \
-    X(brute_force_split_scans)             \
-    X(arrangement_inserts)                 \
-    X(arrangement_removes)                 \
-    X(arrangement_crossings_initial)       \
-    X(intersection_queries)                \
-    X(segments_scanned)                    \
-    X(cache_hits)                          \
-    X(cache_misses)                        \
-    X(cache_refills)                       \
-    X(cache_invalidations)                 \
-    X(queue_pushes)                        \
-    X(queue_pops)                          \
-    X(queue_updates)                       \
-    X(queue_removes)                       \
-    X(exact_fallbacks)                     \
-    X(stale_events)
+/* A counter: its name (JSON stats key, CSV column) and what one count is. */
+typedef struct wk_counter_def {
+    const char *name;
+    const char *meaning;
+} wk_counter_def;
+
+/* The counters of what every variant shares: the kinetic wavefront, the
+** event queue and the predicates.  A variant declares its own counters in
+** its wk_variant (engine/variant.h); counter ids run over both: engine
+** counter i has id i, the variant's counter j has id WK_ENGINE_COUNTERS + j.
+** Counters hold counts only (no times, no addresses), so they are
+** deterministic. */
+#define WK_ENGINE_COUNTER_LIST(X)                                                            \
+    X(edge_events, "a wavefront edge shrank to zero length")                                 \
+    X(split_events, "a reflex wavefront vertex hit the interior of an edge")                 \
+    X(multi_split_events, "several reflex vertices met at one point")                        \
+    X(reflex_preserving_edge_events, "an edge event whose new vertex is reflex")             \
+    X(vanishing_components, "a wavefront cycle vanished")                                    \
+    X(simultaneous_event_groups, "a group of simultaneous events was resolved")              \
+    X(collinear_resolutions, "parallel edges of different weight met (the collinear rule)") \
+    X(queue_pushes, "event queue insertions")                                                \
+    X(queue_pops, "event queue extractions of the minimum")                                  \
+    X(queue_updates, "event queue key changes")                                              \
+    X(queue_removes, "event queue removals of a non-minimum")                                \
+    X(exact_fallbacks, "orientation tests the float filter could not decide (exact stage)")
+
+typedef enum wk_engine_counter {
+#define WK_COUNTER_ENUM(name, meaning) WK_COUNTER_##name,
+    WK_ENGINE_COUNTER_LIST(WK_COUNTER_ENUM)
+#undef WK_COUNTER_ENUM
+    WK_ENGINE_COUNTERS /* how many; the first variant counter's id */
+} wk_engine_counter;
+
+/* Most counters one variant may declare. */
+#define WK_VARIANT_COUNTERS_MAX 24
+#define WK_COUNTERS_MAX (WK_ENGINE_COUNTERS + WK_VARIANT_COUNTERS_MAX)
 
 typedef struct wk_counters {
-#define WK_COUNTER_FIELD(name) uint64_t name;
-    WK_COUNTER_LIST(WK_COUNTER_FIELD)
-#undef WK_COUNTER_FIELD
+    uint64_t c[WK_COUNTERS_MAX]; /* by counter id */
 } wk_counters;
+
+typedef struct wk_variant wk_variant;
+struct wk_run;
+
+/* The counters a run of V reports, in output order: the engine's, then V's
+** (V may be NULL: the engine's only).  wk_counter_def_at is NULL for
+** id >= wk_counter_count(V). */
+uint32_t wk_counter_count(const wk_variant *V);
+const wk_counter_def *wk_counter_def_at(const wk_variant *V, uint32_t id);
+/* The id of V's counter called name; false if V has none of that name. */
+bool wk_counter_find(const wk_variant *V, const char *name, uint32_t *id);
+/* The value of the counter called name of the run's variant (R->variant,
+** set by wk_solve; the engine's counters only while it is NULL); false if
+** that variant does not have it. */
+bool wk_counter_lookup(const struct wk_run *R, const char *name, uint64_t *value);
+/* The union of the counter names over the registry, in CSV column order:
+** the engine's, then each registered variant's new names in registry order.
+** Writes at most cap names; returns how many there are. */
+uint32_t wk_counter_union(const char **names, uint32_t cap);
 
 /* ------------------------------------------------------------- observer */
 
-typedef enum wk_event_kind {
-    WK_EV_EDGE,              /* an edge shrank to zero length */
-    WK_EV_SPLIT,             /* a reflex vertex hit the interior of an edge */
-    WK_EV_MULTI_SPLIT,       /* several reflex vertices met at one point */
-    WK_EV_SWITCH,            /* arrangement variants: convex vertex jumped */
-    WK_EV_START,             /* arrangement variants: Steiner vertex started */
-    WK_EV_REFLEX_EDGE,       /* edge event whose result is reflex */
-    WK_EV_VANISH,            /* a wavefront component vanished */
-    WK_EV_GROUP,             /* a group of simultaneous events was resolved */
-    WK_EV_COLLINEAR,         /* parallel edges of different weight met (rule) */
-    WK_EV_CHAIN_EDGE,        /* monotone: edge event in a chain, c = 0 lower,
-                                1 upper (also counted as an edge event) */
-    WK_EV_MERGE_VERTEX,      /* monotone: a vertex of the merge chain */
-    WK_EV_MERGE_CELL,        /* monotone: a face cell the merge walk entered */
-    WK_EV_FALLBACK,          /* a variant handed the input to the reference
-                                wavefront (brute-force splits) */
-    WK_EV_BRUTE_SPLIT,       /* arrangement: a split searched over the whole
-                                cycle (F unknown or segment not yet built) */
-    WK_EV_KIND_COUNT
-} wk_event_kind;
-
+/* Where an event happened; a, b, c are ids involved (meaning set by whoever
+** raises the event), WK_NONE if unused. */
 typedef struct wk_event {
-    double t, x, y;          /* time and place */
-    uint32_t a, b, c;        /* ids involved (variant-defined), WK_NONE if unused */
+    double t, x, y;
+    uint32_t a, b, c;
 } wk_event;
 
-typedef enum wk_queue_op { WK_Q_PUSH, WK_Q_POP, WK_Q_UPDATE, WK_Q_REMOVE } wk_queue_op;
-typedef enum wk_cache_op { WK_C_HIT, WK_C_MISS, WK_C_REFILL, WK_C_INVALIDATE } wk_cache_op;
-typedef enum wk_arr_op {
-    WK_A_INSERT, WK_A_REMOVE, WK_A_QUERY, WK_A_SCANNED, WK_A_INITIAL_CROSSING
-} wk_arr_op;
-
-/* Hooks may be NULL.  Observers see const data and cannot steer a run. */
+/* Hooks may be NULL.  Observers see const data and cannot steer a run.
+** event: an event was processed; `counter` is the counter it counts on
+**   (engine ids such as WK_COUNTER_edge_events, or a variant's own), which
+**   is also its kind.
+** count: n more units of work that are not events (queue operations,
+**   segments scanned, exact stages) on counter `counter`.
+** finished: wk_solve's variant returned (ok: a skeleton). */
 typedef struct wk_observer {
-    void (*event_processed)(void *ud, wk_event_kind kind, const wk_event *e);
-    void (*queue_op)(void *ud, wk_queue_op op);
-    void (*cache_op)(void *ud, wk_cache_op op);
-    void (*arrangement_op)(void *ud, wk_arr_op op, uint64_t count);
-    void (*exact_fallback)(void *ud);
-    void (*stale_event)(void *ud);
+    void (*event)(void *ud, uint32_t counter, const wk_event *e);
+    void (*count)(void *ud, uint32_t counter, uint64_t n);
     void (*finished)(void *ud, bool ok);
 } wk_observer;
 
@@ -178,7 +174,6 @@ typedef enum wk_collinear_rule {
 } wk_collinear_rule;
 
 typedef struct wk_options {
-    const char *variant;     /* "naive" by default */
     uint32_t k;              /* arrangement cache size; WK_K_MAX for max */
     wk_collinear_rule collinear;
     int threads;             /* OpenMP threads for variants that use them */
@@ -193,6 +188,7 @@ typedef struct wk_run {
     const wk_observer *obs;  /* never NULL */
     void *obs_ud;            /* &counters for the counting observer */
     wk_options opt;
+    const wk_variant *variant; /* whose counters these are: set by wk_solve */
     wk_error err;            /* the first failure wins */
 } wk_run;
 
@@ -205,6 +201,9 @@ size_t wk_run_close(wk_run *R);
 /* Start a new phase for the peak statistic: peak := live. */
 void wk_run_reset_peak(wk_run *R);
 
+/* Forget the recorded failure (a variant that recovers from one, e.g. by
+** handing the input to the reference variant). */
+void wk_run_clear_error(wk_run *R);
 /* Record a failure (the first one wins) and return its code.  Use WK_FAIL. */
 wk_status wk_fail(wk_run *R, wk_status code, const char *input, long input_line,
                   const char *src_file, int src_line, const char *fmt, ...)
@@ -231,23 +230,11 @@ wk_status wk_grow(wk_run *R, void **pp, uint32_t *cap, uint32_t need, size_t ele
 #define WK_GROW(R, p, cap, need) wk_grow((R), (void **)&(p), &(cap), (need), sizeof(*(p)))
 
 /* Observer notifications (thin inline wrappers). */
-static inline void wk_notify_event(wk_run *R, wk_event_kind k, const wk_event *e) {
-    if (R->obs->event_processed) R->obs->event_processed(R->obs_ud, k, e);
+static inline void wk_notify_event(wk_run *R, uint32_t counter, const wk_event *e) {
+    if (R->obs->event) R->obs->event(R->obs_ud, counter, e);
 }
-static inline void wk_notify_queue(wk_run *R, wk_queue_op op) {
-    if (R->obs->queue_op) R->obs->queue_op(R->obs_ud, op);
-}
-static inline void wk_notify_cache(wk_run *R, wk_cache_op op) {
-    if (R->obs->cache_op) R->obs->cache_op(R->obs_ud, op);
-}
-static inline void wk_notify_arrangement(wk_run *R, wk_arr_op op, uint64_t count) {
-    if (R->obs->arrangement_op) R->obs->arrangement_op(R->obs_ud, op, count);
-}
-static inline void wk_notify_exact(wk_run *R) {
-    if (R->obs->exact_fallback) R->obs->exact_fallback(R->obs_ud);
-}
-static inline void wk_notify_stale(wk_run *R) {
-    if (R->obs->stale_event) R->obs->stale_event(R->obs_ud);
+static inline void wk_count(wk_run *R, uint32_t counter, uint64_t n) {
+    if (R->obs->count) R->obs->count(R->obs_ud, counter, n);
 }
 
 /* -------------------------------------------------------------- polygon */
@@ -397,7 +384,8 @@ typedef struct wk_run_info {
     uint32_t k;              /* WK_NONE: not applicable ("k":null) */
     double time_s;           /* construction time */
     size_t peak_bytes;       /* peak tracked bytes of the construction */
-    const wk_counters *counters;
+    const wk_counters *counters; /* NULL: no counters in the stats */
+    const wk_variant *counters_of; /* whose counters (NULL: the engine's only) */
 } wk_run_info;
 
 wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
@@ -431,20 +419,22 @@ wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, ui
 
 /* ------------------------------------------------------------- variants */
 
-typedef struct wk_variant {
-    const char *name;
-    const char *summary;
-    unsigned flags;          /* WK_VARIANT_* */
-    wk_status (*run)(wk_run *R, const wk_polygon *P, wk_skeleton **out);
-} wk_variant;
-
+/* A variant is one algorithm (variants/<name>/); its struct is the
+** interface a variant implements (engine/variant.h).  Here: what callers
+** may ask of one. */
 #define WK_VARIANT_WEIGHTS 1u /* handles non-unit weights */
 #define WK_VARIANT_USES_K 2u  /* the k option matters */
+const char *wk_variant_name(const wk_variant *V);
+const char *wk_variant_summary(const wk_variant *V);
+unsigned wk_variant_flags(const wk_variant *V); /* WK_VARIANT_* */
 
 /* NULL-terminated registry lookup; NULL if unknown. */
 const wk_variant *wk_variant_find(const char *name);
 /* i-th registered variant, NULL past the end. */
 const wk_variant *wk_variant_at(size_t i);
+/* The reference variant (the oracle; a variant's fallback where its own
+** algorithm cannot certify a result). */
+const wk_variant *wk_variant_reference(void);
 
 /* Run a variant on P: resets the peak, times the construction.  On success
 ** *out is the skeleton (caller frees with wk_skeleton_free); time_s and

@@ -10,6 +10,18 @@
 /* Every test closes its run with no live bytes left. */
 #define ASSERT_CLEAN_CLOSE(R) cr_assert_eq(wk_run_close(&(R)), 0, "leaked %zu bytes", (R).alloc.live)
 
+/* Counter `name` of variant V (NULL: the engine's) in c; fails the test if V
+** has no such counter. */
+static inline uint64_t counter_in(const wk_counters *c, const wk_variant *V, const char *name) {
+    uint32_t id = 0;
+    cr_assert(wk_counter_find(V, name, &id), "no counter %s", name);
+    return c->c[id];
+}
+/* Counter `name` of the run's variant (R->variant, set by wk_solve). */
+static inline uint64_t counter(const wk_run *R, const char *name) {
+    return counter_in(&R->counters, R->variant, name);
+}
+
 typedef struct arc4 { uint32_t a, b, l, r; } arc4;
 
 /* A validated polygon from arrays (w may be NULL); fails the test if rejected. */

@@ -22,8 +22,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "arrangement.h"
+#include "arrangement/bisector_arrangement.h"
 #include "generators.h"
+#include "fixtures.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -69,6 +70,7 @@ static const double NOTCH[] = {0, 0, 10, 0, 10, 10, 6, 10, 5, 8, 4, 10, 0, 10};
 Test(arrangement, notched_square_unit) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     wk_polygon *P = poly(&R, 7, NOTCH, NULL);
     wk_aseg *S;
     uint32_t r;
@@ -95,6 +97,7 @@ Test(arrangement, notched_square_unit) {
 Test(arrangement, notched_square_weighted) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     /* Edge 3 runs (6,10) -> (5,8), the notch's right flank, weight 2. */
     double w[7] = {1, 1, 1, 2, 1, 1, 1};
     wk_polygon *P = poly(&R, 7, NOTCH, w);
@@ -125,6 +128,7 @@ static const double CROSS[] = {-1, -3, 1,  -3, 1,  -1, 3,  -1, 3,  1,  1,  1,
 Test(arrangement, cross_segments_meet_in_the_centre) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     wk_polygon *P = poly(&R, 12, CROSS, NULL);
     wk_aseg *S;
     uint32_t r;
@@ -145,7 +149,7 @@ Test(arrangement, cross_segments_meet_in_the_centre) {
     uint64_t K;
     cr_assert_eq(wk_arrangement_count_crossings(&R, S, r, &K), WK_OK);
     cr_assert_eq(K, 4);
-    cr_assert_eq(R.counters.arrangement_crossings_initial, 4);
+    cr_assert_eq(counter(&R, "arrangement_crossings_initial"), 4);
 
     /* In the dynamic structure: the two crossings of a segment are at the
     ** same parameter (the centre); both are reported, in id order, and the
@@ -206,6 +210,7 @@ static bool same_hit(const wk_ray_hit *a, const wk_ray_hit *b) {
 Test(arrangement, ray_shooting_matches_brute_force) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     static const char *const fams[] = {"star", "crossing", "random", "comb", "spiral", "notched"};
     uint32_t ns[] = {50, 200, 2000};
     uint32_t nn = quick() ? 2 : 3;
@@ -282,6 +287,7 @@ Test(arrangement, ray_shooting_matches_brute_force) {
 Test(arrangement, ray_through_a_vertex_hits_the_vertex) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     /* A square with a convex bump: vertex 3 at (5, 12) sticks out of the
     ** top side; a vertical ray x = 5 passes exactly through it. */
     static const double B[] = {0, 0, 10, 0, 10, 10, 5, 12, 0, 10};
@@ -321,6 +327,7 @@ static uint64_t brute_crossings(const wk_aseg *S, uint32_t r) {
 Test(arrangement, crossing_count_matches_brute_force) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     static const char *const fams[] = {"star",   "notched",  "random",   "comb",
                                        "spiral", "crossing", "monotone", "rectilinear"};
     uint32_t ns[] = {40, 300, 1500};
@@ -336,7 +343,7 @@ Test(arrangement, crossing_count_matches_brute_force) {
                     wk_aseg *S;
                     uint32_t r;
                     cr_assert_eq(wk_arrangement_segments(&R, P, &S, &r), WK_OK, "%s", R.err.msg);
-                    uint64_t before = R.counters.arrangement_crossings_initial, K;
+                    uint64_t before = counter(&R, "arrangement_crossings_initial"), K;
                     cr_assert_eq(wk_arrangement_count_crossings(&R, S, r, &K), WK_OK);
                     uint64_t want = brute_crossings(S, r);
                     cr_assert_eq(K, want,
@@ -345,7 +352,7 @@ Test(arrangement, crossing_count_matches_brute_force) {
                                  fams[f], ns[k], (unsigned long long)seed,
                                  weights[w] ? weights[w] : "unit", (unsigned long long)K,
                                  (unsigned long long)want);
-                    cr_assert_eq(R.counters.arrangement_crossings_initial - before, K);
+                    cr_assert_eq(counter(&R, "arrangement_crossings_initial") - before, K);
                     WK_FREE_ARRAY(&R, S, r);
                     wk_polygon_free(&R, P);
                 }
@@ -355,6 +362,7 @@ Test(arrangement, crossing_count_matches_brute_force) {
 Test(arrangement, crossing_family_count) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     static const int64_t rs[] = {0, 1, 2, 3, 9, 40, 101, 400};
     for (size_t j = 0; j < sizeof rs / sizeof rs[0]; j++)
         for (uint64_t seed = 1; seed <= 2; seed++) {
@@ -381,6 +389,7 @@ Test(arrangement, crossing_family_count) {
 Test(arrangement, crossing_count_degenerate_layouts) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     enum { M = 120 };
     wk_aseg S[M];
     memset(S, 0, sizeof S);
@@ -414,6 +423,7 @@ Test(arrangement, crossing_count_degenerate_layouts) {
 Test(arrangement, thread_count_does_not_change_anything) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     static const char *const fams[] = {"star", "random", "crossing", "spiral"};
     uint32_t n = quick() ? 400 : 3000;
     for (size_t f = 0; f < sizeof fams / sizeof fams[0]; f++) {
@@ -521,6 +531,7 @@ static void build_random(wk_run *R, wk_arrangement *A, const char *fam, uint32_t
 Test(arrangement, next_crossings_match_brute_force) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     wk_arrangement A;
     build_random(&R, &A, "star", quick() ? 120 : 400, 3, 40);
     wk_crossing *all = WK_NEW_ARRAY(&R, wk_crossing, A.n_live);
@@ -537,13 +548,13 @@ Test(arrangement, next_crossings_match_brute_force) {
         for (int f = 0; f < 3; f++)
             for (int kk = 0; kk < 4; kk++) {
                 uint32_t want = all_crossings(&A, id, froms[f], afters[f], all);
-                uint64_t q0 = R.counters.intersection_queries, sc0 = R.counters.segments_scanned;
+                uint64_t q0 = counter(&R, "intersection_queries"), sc0 = counter(&R, "segments_scanned");
                 uint32_t got;
                 cr_assert_eq(wk_arrangement_next_crossings_after(&R, &A, id, froms[f], afters[f],
                                                                  ks[kk], out, &got),
                              WK_OK);
-                cr_assert_eq(R.counters.intersection_queries - q0, 1);
-                cr_assert_eq(R.counters.segments_scanned - sc0, A.n_live - 1);
+                cr_assert_eq(counter(&R, "intersection_queries") - q0, 1);
+                cr_assert_eq(counter(&R, "segments_scanned") - sc0, A.n_live - 1);
                 uint32_t exp = want < ks[kk] ? want : ks[kk];
                 cr_assert_eq(got, exp, "seg %u k=%u: %u crossings, want %u", id, ks[kk], got, exp);
                 for (uint32_t i = 0; i < got; i++)
@@ -584,8 +595,8 @@ typedef struct cache_counts {
 } cache_counts;
 
 static cache_counts counts(const wk_run *R) {
-    return (cache_counts){R->counters.cache_hits, R->counters.cache_misses,
-                          R->counters.cache_refills, R->counters.cache_invalidations};
+    return (cache_counts){counter(R, "cache_hits"), counter(R, "cache_misses"),
+                          counter(R, "cache_refills"), counter(R, "cache_invalidations")};
 }
 
 /* Walk H's crossings one by one through the cache and return the counts. */
@@ -614,6 +625,7 @@ static cache_counts walk(wk_run *R, wk_arrangement *A, uint32_t k) {
 Test(arrangement, cache_hits_misses_refills_scripted) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     struct {
         uint32_t k;
         cache_counts want;
@@ -646,6 +658,7 @@ Test(arrangement, cache_hits_misses_refills_scripted) {
 Test(arrangement, cache_memory_grows_with_k) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     size_t peak[3];
     uint32_t ks[3] = {1, 8, WK_K_MAX};
     for (int i = 0; i < 3; i++) {
@@ -670,6 +683,7 @@ Test(arrangement, cache_memory_grows_with_k) {
 Test(arrangement, invalidation_on_insert_remove_and_active_parts) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     wk_arrangement A;
     comb_setup(&R, &A);
     R.opt.k = WK_K_MAX;
@@ -757,6 +771,7 @@ Test(arrangement, invalidation_on_insert_remove_and_active_parts) {
 Test(arrangement, cache_agrees_with_scans_under_random_updates) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     uint32_t ks[] = {1, 2, 7, WK_K_MAX};
     uint32_t steps = quick() ? 1500 : 6000;
     for (int kk = 0; kk < 4; kk++) {
@@ -818,8 +833,8 @@ Test(arrangement, cache_agrees_with_scans_under_random_updates) {
             if (step % 64 == 0) cr_assert(wk_arrangement_check(&A), "step %u", step);
         }
         cr_assert(wk_arrangement_check(&A));
-        if (ks[kk] > 1) cr_assert_gt(R.counters.cache_hits, 0);
-        cr_assert_gt(R.counters.cache_invalidations, 0);
+        if (ks[kk] > 1) cr_assert_gt(counter(&R, "cache_hits"), 0);
+        cr_assert_gt(counter(&R, "cache_invalidations"), 0);
         wk_arrangement_clear(&R, &A);
     }
     cr_assert_eq(wk_run_close(&R), 0);
@@ -862,6 +877,7 @@ done:
 Test(arrangement, every_allocation_failure_is_clean) {
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     R.opt.k = 3;
     wk_polygon *P = NULL;
     cr_assert_eq(gen(&R, "star", 60, -1, 4, NULL, &P), WK_OK);
@@ -901,6 +917,7 @@ Test(arrangement, timings, .timeout = 600) {
     if (!getenv("WSKEL_ARR_TIMING")) return;
     wk_run R;
     wk_run_init(&R);
+    R.variant = wk_variant_find("arrangement"); /* its counters */
     struct {
         const char *fam;
         uint32_t n;
@@ -945,7 +962,7 @@ Test(arrangement, timings, .timeout = 600) {
     wk_crossing *out = WK_NEW_ARRAY(&R, wk_crossing, A.n_live);
     uint32_t ks[] = {1, 7, WK_K_MAX};
     for (int kk = 0; kk < 3; kk++) {
-        uint64_t sc0 = R.counters.segments_scanned;
+        uint64_t sc0 = counter(&R, "segments_scanned");
         double t0 = now_s();
         for (uint32_t id = 0; id < A.n_ids; id++) {
             uint32_t cnt;
@@ -954,7 +971,7 @@ Test(arrangement, timings, .timeout = 600) {
                              WK_OK);
         }
         double dt = now_s() - t0;
-        uint64_t sc = R.counters.segments_scanned - sc0;
+        uint64_t sc = counter(&R, "segments_scanned") - sc0;
         fprintf(stderr,
                 "scan star n=10000 (%u segments) k=%u: %.3f s, %.2f ns per scanned segment\n",
                 A.n_live, ks[kk], dt, 1e9 * dt / (double)sc);

@@ -7,6 +7,7 @@
 #include <criterion/criterion.h>
 
 #include "event_queue.h"
+#include "fixtures.h"
 
 static uint64_t rng(uint64_t *s) {
     *s = *s * 6364136223846793005ull + 1442695040888963407ull;
@@ -51,10 +52,10 @@ Test(event_queue, matches_brute_force_model) {
         cr_assert(wk_event_queue_check(&Q), "heap invariant broken at step %d", step);
         for (uint32_t i = 0; i < IDS; i++) cr_assert_eq(wk_event_queue_contains(&Q, i), in[i]);
     }
-    cr_assert_gt(R.counters.queue_pushes, 0);
-    cr_assert_gt(R.counters.queue_updates, 0);
-    cr_assert_gt(R.counters.queue_removes, 0);
-    cr_assert_gt(R.counters.queue_pops, 0);
+    cr_assert_gt(counter(&R, "queue_pushes"), 0);
+    cr_assert_gt(counter(&R, "queue_updates"), 0);
+    cr_assert_gt(counter(&R, "queue_removes"), 0);
+    cr_assert_gt(counter(&R, "queue_pops"), 0);
     wk_event_queue_clear(&R, &Q);
     cr_assert_eq(wk_run_close(&R), 0);
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "wskel.h"
+#include "fixtures.h"
 
 Test(run, counts_live_and_peak_bytes) {
     wk_run R;
@@ -97,22 +98,51 @@ Test(run, counting_observer_counts_by_kind) {
     wk_run R;
     wk_run_init(&R);
     wk_event e = {0, 0, 0, 0, 0, 0};
-    wk_notify_event(&R, WK_EV_EDGE, &e);
-    wk_notify_event(&R, WK_EV_EDGE, &e);
-    wk_notify_event(&R, WK_EV_SPLIT, &e);
-    wk_notify_arrangement(&R, WK_A_SCANNED, 7);
-    wk_notify_cache(&R, WK_C_HIT);
-    cr_assert_eq(R.counters.edge_events, 2);
-    cr_assert_eq(R.counters.split_events, 1);
-    cr_assert_eq(R.counters.segments_scanned, 7);
-    cr_assert_eq(R.counters.cache_hits, 1);
+    wk_notify_event(&R, WK_COUNTER_edge_events, &e);
+    wk_notify_event(&R, WK_COUNTER_edge_events, &e);
+    wk_notify_event(&R, WK_COUNTER_split_events, &e);
+    wk_count(&R, WK_COUNTER_queue_pushes, 7);
+    wk_count(&R, WK_ENGINE_COUNTERS + 2, 3); /* a variant's third counter */
+    cr_assert_eq(counter(&R, "edge_events"), 2);
+    cr_assert_eq(counter(&R, "split_events"), 1);
+    cr_assert_eq(counter(&R, "queue_pushes"), 7);
+    uint64_t v = 0;
+    cr_assert(!wk_counter_lookup(&R, "cache_hits", &v), "no variant yet: engine counters only");
+    R.variant = wk_variant_find("arrangement");
+    cr_assert(wk_counter_lookup(&R, wk_counter_def_at(R.variant, WK_ENGINE_COUNTERS + 2)->name, &v));
+    cr_assert_eq(v, 3);
+    cr_assert(!wk_counter_lookup(&R, "chain_edge_events_lower", &v), "not an arrangement counter");
     cr_assert_eq(wk_run_close(&R), 0);
 }
 
 Test(run, registry_lists_naive) {
     const wk_variant *V = wk_variant_find("naive");
     cr_assert_not_null(V);
-    cr_assert(V->flags & WK_VARIANT_WEIGHTS);
+    cr_assert(wk_variant_flags(V) & WK_VARIANT_WEIGHTS);
+    cr_assert_eq(wk_variant_reference(), V);
     cr_assert_null(wk_variant_find("no-such-variant"));
     cr_assert_eq(wk_variant_at(0), V);
+}
+
+Test(run, counter_union_lists_every_name_once) {
+    const char *names[256];
+    uint32_t n = wk_counter_union(names, 256);
+    cr_assert_leq(n, 256);
+    cr_assert_geq(n, WK_ENGINE_COUNTERS);
+    for (uint32_t i = 0; i < WK_ENGINE_COUNTERS; i++)
+        cr_assert_str_eq(names[i], wk_counter_def_at(NULL, i)->name, "engine counters come first");
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t j = i + 1; j < n; j++) cr_assert_str_neq(names[i], names[j]);
+    /* every counter of every variant is a column */
+    for (size_t v = 0; wk_variant_at(v); v++) {
+        const wk_variant *V = wk_variant_at(v);
+        for (uint32_t id = 0; id < wk_counter_count(V); id++) {
+            bool found = false;
+            for (uint32_t i = 0; i < n && !found; i++)
+                found = !strcmp(names[i], wk_counter_def_at(V, id)->name);
+            cr_assert(found, "%s of %s missing", wk_counter_def_at(V, id)->name, wk_variant_name(V));
+            cr_assert(wk_counter_def_at(V, id)->meaning[0], "a counter without a meaning");
+        }
+        cr_assert_null(wk_counter_def_at(V, wk_counter_count(V)));
+    }
 }

@@ -36,6 +36,7 @@
 
 #include "generators.h"
 #include "wskel.h"
+#include "fixtures.h"
 
 #define ASSERT_CLEAN_CLOSE(R) \
     cr_assert_eq(wk_run_close(&(R)), 0, "leaked %zu bytes", (R).alloc.live)
@@ -167,7 +168,7 @@ static wk_status check_case_fb(const wk_polygon *P, const char *what, wk_colline
         err_text(&R, msg, sizeof msg);
         cr_expect(st == WK_EALGO, "%s: status %s: %s", what, wk_status_name(st), msg);
     }
-    if (fallbacks) *fallbacks = R.counters.reference_fallbacks;
+    if (fallbacks) *fallbacks = counter(&R, "reference_fallbacks");
     ASSERT_CLEAN_CLOSE(R);
     ASSERT_CLEAN_CLOSE(Rn);
     return st;

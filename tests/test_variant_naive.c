@@ -43,6 +43,7 @@
 
 #include "generators.h"
 #include "wskel.h"
+#include "fixtures.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -666,8 +667,8 @@ Test(naive, hand_collinear_different_weights_both_rules) {
             cr_expect(has_arc(S, 0, 1, 1, 0) || has_arc(S, 0, 1, 0, 1),
                       "%s: no arc along the removed edge 0", what);
         }
-        cr_expect_geq(R.counters.collinear_resolutions, 1, "%s: collinear_resolutions = %llu",
-                      what, (unsigned long long)R.counters.collinear_resolutions);
+        cr_expect_geq(counter(&R, "collinear_resolutions"), 1, "%s: collinear_resolutions = %llu",
+                      what, (unsigned long long)counter(&R, "collinear_resolutions"));
         for (int j = 0; j < 2; j++) got[rule][j] = S->nodes[P->n + j];
         wk_skeleton_free(&R, S);
         wk_polygon_free(&R, P);
@@ -699,8 +700,8 @@ Test(naive, hand_collinear_catch_up_both_rules) {
             uint32_t a = node_at(P, S, 30, 10), b = node_at(P, S, 30, -40);
             cr_expect(has_arc(S, a, b, 0, 2), "%s: no arc along the removed edge 2", what);
         }
-        cr_expect_geq(R.counters.collinear_resolutions, 1, "%s: collinear_resolutions = %llu",
-                      what, (unsigned long long)R.counters.collinear_resolutions);
+        cr_expect_geq(counter(&R, "collinear_resolutions"), 1, "%s: collinear_resolutions = %llu",
+                      what, (unsigned long long)counter(&R, "collinear_resolutions"));
         wk_skeleton_free(&R, S);
         wk_polygon_free(&R, P);
         ASSERT_CLEAN_CLOSE(R);
@@ -792,9 +793,9 @@ Test(naive, hand_reflex_preserving_edge_event) {
     cr_expect(has_arc(S, 6, x, 5, 6) && has_arc(S, 0, x, 6, 0), "chamfer arcs missing");
     cr_expect(has_arc(S, x, c, 5, 0), "no arc from the event point to (1,1) between edges 5 and 0");
     /* exactly one edge event leaves a reflex vertex: the chamfer's */
-    cr_expect_eq(R.counters.reflex_preserving_edge_events, 1,
+    cr_expect_eq(counter(&R, "reflex_preserving_edge_events"), 1,
                  "reflex_preserving: reflex_preserving_edge_events = %llu, want 1",
-                 (unsigned long long)R.counters.reflex_preserving_edge_events);
+                 (unsigned long long)counter(&R, "reflex_preserving_edge_events"));
     wk_skeleton_free(&R, S);
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
@@ -927,11 +928,11 @@ Test(naive, unit_weights_no_reflex_preserving_edge_events) {
                 wk_skeleton *S = NULL;
                 if (wk_solve(&R, naive(), P, &S, NULL, NULL) == WK_OK) { /* failures: property tests */
                     cases++;
-                    cr_expect_eq(R.counters.reflex_preserving_edge_events, 0,
+                    cr_expect_eq(counter(&R, "reflex_preserving_edge_events"), 0,
                                  "%s n=%u seed=%llu (unit weights): "
                                  "reflex_preserving_edge_events = %llu",
                                  g.family, g.n, (unsigned long long)seed,
-                                 (unsigned long long)R.counters.reflex_preserving_edge_events);
+                                 (unsigned long long)counter(&R, "reflex_preserving_edge_events"));
                     wk_skeleton_free(&R, S);
                 }
                 wk_polygon_free(&R, P);
@@ -1028,12 +1029,11 @@ Test(naive, deterministic_bit_identical) {
                   "%s: nodes differ between two runs", what);
         cr_expect(!memcmp(S[0]->arcs, S[1]->arcs, S[0]->n_arcs * sizeof(wk_arc)),
                   "%s: arcs differ between two runs", what);
-#define CMP_COUNTER(name)                                                                \
-    cr_expect_eq(R[0].counters.name, R[1].counters.name, "%s: counter " #name " %llu vs %llu", \
-                 what, (unsigned long long)R[0].counters.name,                            \
-                 (unsigned long long)R[1].counters.name);
-        WK_COUNTER_LIST(CMP_COUNTER)
-#undef CMP_COUNTER
+for (uint32_t id = 0; id < wk_counter_count(R[0].variant); id++)
+            cr_expect_eq(R[0].counters.c[id], R[1].counters.c[id], "%s: counter %s %llu vs %llu",
+                         what, wk_counter_def_at(R[0].variant, id)->name,
+                         (unsigned long long)R[0].counters.c[id],
+                         (unsigned long long)R[1].counters.c[id]);
         for (int j = 0; j < 2; j++) {
             wk_skeleton_free(&R[j], S[j]);
             wk_polygon_free(&R[j], P[j]);

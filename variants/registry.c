@@ -1,11 +1,16 @@
 /*
 ** registry.c: the static const list of variants (Redis's backend table).
-** To add a variant: declare it in variant.h and list it here; the Makefile
-** builds every .c file of every folder under variants/ into the library.
+** To add a variant: declare it here and list it below; the Makefile builds
+** every .c file of every folder under variants/ into the library.  The first
+** entry is the reference variant (wk_variant_reference).
 */
 #include "variant.h"
 
 #include <string.h>
+
+extern const wk_variant wk_variant_naive;
+extern const wk_variant wk_variant_monotone;
+extern const wk_variant wk_variant_arrangement;
 
 static const wk_variant *const registry[] = {
     &wk_variant_naive,
@@ -23,3 +28,5 @@ const wk_variant *wk_variant_find(const char *name) {
 const wk_variant *wk_variant_at(size_t i) {
     return i < sizeof registry / sizeof registry[0] - 1 ? registry[i] : NULL;
 }
+
+const wk_variant *wk_variant_reference(void) { return registry[0]; }

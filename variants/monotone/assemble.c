@@ -21,7 +21,7 @@
 ** distance from both ends), so a failure of the local decisions shows as
 ** WK_EALGO, never as a wrong skeleton.
 */
-#include "monotone_internal.h"
+#include "monotone.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -32,7 +32,7 @@
 ** Tolerances as in wskel.h: a vertex arrives at N when it is within eps_d
 ** plus its speed times eps_t.
 */
-#include "monotone_internal.h"
+#include "monotone.h"
 
 #include <math.h>
 #include <string.h>
@@ -241,7 +241,7 @@ static wk_status resolve(sim *S, uint32_t node, uint32_t P, uint32_t Q, uint32_t
             bool out_loses = R->opt.collinear == WK_COLLINEAR_LOWER ? wo > wi : wo < wi;
             side = out_loses ? +1 : -1;
             wk_event e = {t, at.x, at.y, ein, eout, WK_NONE};
-            wk_notify_event(R, WK_EV_COLLINEAR, &e);
+            wk_notify_event(R, WK_COUNTER_collinear_resolutions, &e);
         } else { /* antiparallel: the nearer far end */
             double dP = P != WK_NONE ? dist2(wk_mono_trace_at(&C->v[P], t), at) : INFINITY;
             double dQ = Q != WK_NONE ? dist2(wk_mono_trace_at(&C->v[Q], t), at) : INFINITY;
@@ -385,7 +385,8 @@ wk_status wk_mono_chain_build(mono *M, uint32_t c) {
         }
         A = &C->v[a];
         wk_event e = {t, A->ev_p.x, A->ev_p.y, a, b, c};
-        wk_notify_event(R, WK_EV_CHAIN_EDGE, &e); /* e.c: the chain */
+        wk_notify_event(R, WK_COUNTER_edge_events, &e); /* e.c: the chain */
+        wk_count(R, c == 0 ? WK_VC_chain_edge_events_lower : WK_VC_chain_edge_events_upper, 1);
         uint32_t Pv = A->prev, Qv = C->v[b].next, ein = A->ein, eout = C->v[b].eout;
         terminate(&S, a, node);
         terminate(&S, b, node);

@@ -29,7 +29,7 @@
 ** v_e) starts and ends with edges that go strictly east and any edge
 ** perpendicular to d at the extremes belongs to the upper chain.
 */
-#include "monotone_internal.h"
+#include "monotone.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -29,7 +29,7 @@
 ** eps_d of the current merge node join it (no new node, no arc), and a
 ** trace already crossed at this node is not crossed again.
 */
-#include "monotone_internal.h"
+#include "monotone.h"
 
 #include <math.h>
 #include <string.h>
@@ -143,7 +143,7 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
 /* The walk's unit of work (001's trapezoid cell): one wall trace looked at. */
 static void visit(const walk *W, uint32_t c, uint32_t v) {
     wk_event ev = {0, 0, 0, v, WK_NONE, c};
-    wk_notify_event(W->M->R, WK_EV_MERGE_CELL, &ev);
+    wk_notify_event(W->M->R, WK_VC_merge_cells_visited, &ev);
 }
 
 /* Walk one wall of face e (trace ids w[0..k)) from the current level. */
@@ -205,7 +205,7 @@ static wk_status add_mnode(mono *M, wk_point p, double t, uint32_t sk, uint32_t 
     M->mn[M->n_mn].sk = sk;
     *id = M->n_mn++;
     wk_event ev = {t, p.x, p.y, *id, sk, WK_NONE};
-    wk_notify_event(M->R, WK_EV_MERGE_VERTEX, &ev);
+    wk_notify_event(M->R, WK_VC_merge_chain_vertices, &ev);
     return WK_OK;
 }
 

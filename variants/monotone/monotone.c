@@ -12,8 +12,7 @@
 ** allocation goes through R and is freed before returning, so a failure at
 ** any point leaves no output and no live bytes.
 */
-#include "monotone_internal.h"
-#include "wavefront.h"
+#include "monotone.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -85,8 +84,8 @@ static wk_status monotone_merge_run(mono *M, wk_skeleton **out) {
 /* Where 001's merge cannot certify its result (weighted inputs whose chain
 ** skeletons do not describe the polygon, walls perpendicular to the sweep
 ** with weights, a walk that gets lost in a degenerate pass), the input goes
-** to the reference wavefront (engine/wavefront.c with brute-force splits,
-** the same code as naive): a right skeleton at the reference's cost, never
+** to the reference variant (wk_variant_reference(), through its registry
+** entry, not its code): a right skeleton at the reference's cost, never
 ** a wrong one and never a refusal of a monotone polygon.  The
 ** reference_fallbacks counter says when that happened, and the first
 ** attempt's memory is freed before the fallback starts. */
@@ -99,11 +98,10 @@ static wk_status monotone_run(wk_run *R, const wk_polygon *P, wk_skeleton **out)
     wk_status st = monotone_merge_run(&M, out);
     mono_clear(&M);
     if (st != WK_EALGO) return st; /* ok, no memory, or WK_EUNSUPPORTED */
-    memset(&R->err, 0, sizeof R->err);
+    wk_run_clear_error(R);
     wk_event ev = {0, 0, 0, WK_NONE, WK_NONE, WK_NONE};
-    wk_notify_event(R, WK_EV_FALLBACK, &ev);
-    if ((st = wk_wavefront_run(R, P, &wk_split_finder_brute_force, NULL, out)) != WK_OK)
-        return st;
+    wk_notify_event(R, WK_VC_reference_fallbacks, &ev);
+    if ((st = wk_variant_reference()->run(R, P, out)) != WK_OK) return st;
     if ((st = wk_validate(R, P, *out, 0, NULL)) != WK_OK) {
         wk_skeleton_free(R, *out);
         *out = NULL;
@@ -111,9 +109,13 @@ static wk_status monotone_run(wk_run *R, const wk_polygon *P, wk_skeleton **out)
     return st;
 }
 
+static const wk_counter_def mono_counters[] = WK_VARIANT_COUNTER_TABLE(MONO_COUNTER_LIST);
+
 const wk_variant wk_variant_monotone = {
     "monotone",
     "001: monotone polygons only, chain skeletons merged along the merge chain, O(n log n)",
     WK_VARIANT_WEIGHTS,
+    mono_counters,
+    sizeof mono_counters / sizeof mono_counters[0],
     monotone_run,
 };

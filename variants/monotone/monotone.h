@@ -1,7 +1,7 @@
 /*
-** monotone_internal.h: the data shared by the files of the monotone variant
-** (001: Biedl, Held, Huber, Kaaser, Palfrader, weighted straight skeletons of
-** monotone polygons).  Not a public header: only variants/monotone/ includes it.
+** monotone.h: the data shared by the files of the monotone variant (001:
+** Biedl, Held, Huber, Kaaser, Palfrader, weighted straight skeletons of
+** monotone polygons), and its counters.  Only variants/monotone/ includes it.
 **
 ** Pipeline (one file per step):
 **   direction.c       find a direction d in which P is monotone, or refuse;
@@ -39,11 +39,20 @@
 ** In creation order the traces of a wall form a polyline whose times never
 ** decrease: merge.c finds a level by binary search and walks from there.
 */
-#ifndef WK_MONOTONE_INTERNAL_H
-#define WK_MONOTONE_INTERNAL_H
-#include "../variant.h"
+#ifndef WK_MONOTONE_H
+#define WK_MONOTONE_H
 #include "event_queue.h"
 #include "kinetics.h"
+#include "variant.h"
+
+#define MONO_COUNTER_LIST(X)                                                                 \
+    X(chain_edge_events_lower, "edge events in the lower chain's skeleton (also edge_events)") \
+    X(chain_edge_events_upper, "edge events in the upper chain's skeleton (also edge_events)") \
+    X(merge_chain_vertices, "vertices of the merge chain M'")                                 \
+    X(merge_cells_visited, "wall traces the merge walk looked at (001's cells)")              \
+    X(reference_fallbacks, "inputs handed to the reference variant (merge not certified)")
+
+WK_VARIANT_COUNTER_ENUM(MONO_COUNTER_LIST)
 
 /* Trace of one wavefront vertex of a chain (see the top). */
 typedef struct mono_trace {

@@ -16,7 +16,7 @@
 **     if it is <= to, and "none" is the truth when to is +infinity.
 **   - n_cached is the number of valid caches.
 */
-#include "arrangement.h"
+#include "bisector_arrangement.h"
 
 #include <float.h>
 #include <math.h>
@@ -252,7 +252,7 @@ wk_status wk_arrangement_count_crossings(wk_run *R, const wk_aseg *segs, uint32_
                                          uint64_t *count) {
     *count = 0;
     if (r < 2) {
-        wk_notify_arrangement(R, WK_A_INITIAL_CROSSING, 0);
+        wk_count(R, WK_VC_arrangement_crossings_initial, 0);
         return WK_OK;
     }
     cseg *S = WK_NEW_ARRAY(R, cseg, r);
@@ -292,7 +292,7 @@ wk_status wk_arrangement_count_crossings(wk_run *R, const wk_aseg *segs, uint32_
     wk_seg_grid_clear(R, &G);
     WK_FREE_ARRAY(R, S, r);
     *count = total;
-    wk_notify_arrangement(R, WK_A_INITIAL_CROSSING, total);
+    wk_count(R, WK_VC_arrangement_crossings_initial, total);
     return WK_OK;
 }
 
@@ -393,7 +393,7 @@ static void invalidate_for(wk_run *R, wk_arrangement *A, uint32_t nslot, double 
         uint32_t keep = cache_lower(C, s, N->id);
         if (keep < C->n && C->e[keep].s == s && C->e[keep].other == N->id && !C->e[keep].dead)
             continue;
-        wk_notify_cache(R, WK_C_INVALIDATE);
+        wk_count(R, WK_VC_cache_invalidations, 1);
         if (keep == 0) {
             cache_drop(R, A, C);
             continue;
@@ -429,7 +429,7 @@ wk_status wk_arrangement_insert(wk_run *R, wk_arrangement *A, wk_point a, wk_poi
     memset(&A->ids[nid], 0, sizeof A->ids[nid]);
     A->ids[nid].slot = slot;
     invalidate_for(R, A, slot, 1.0, 0.0);
-    wk_notify_arrangement(R, WK_A_INSERT, 1);
+    wk_count(R, WK_VC_arrangement_inserts, 1);
     if (id) *id = nid;
     return WK_OK;
 }
@@ -459,7 +459,7 @@ wk_status wk_arrangement_remove(wk_run *R, wk_arrangement *A, uint32_t id) {
     }
     A->n_live--;
     A->ids[id].slot = WK_NONE;
-    wk_notify_arrangement(R, WK_A_REMOVE, 1);
+    wk_count(R, WK_VC_arrangement_removes, 1);
     return WK_OK;
 }
 
@@ -477,7 +477,7 @@ wk_status wk_arrangement_set_active(wk_run *R, wk_arrangement *A, uint32_t id, d
     S->hi = hi;
     if (lo < old_lo || hi > old_hi) {
         wk_arr_cache *C = &A->ids[id].cache;
-        if (C->valid) wk_notify_cache(R, WK_C_INVALIDATE);
+        if (C->valid) wk_count(R, WK_VC_cache_invalidations, 1);
         cache_drop(R, A, C);
         invalidate_for(R, A, slot, old_lo, old_hi);
     }
@@ -546,8 +546,8 @@ wk_status wk_arrangement_next_crossings_after(wk_run *R, wk_arrangement *A, uint
             sift_down(out, m - 1, 0);
         }
     *count = n;
-    wk_notify_arrangement(R, WK_A_QUERY, 1);
-    wk_notify_arrangement(R, WK_A_SCANNED, A->n_live - 1);
+    wk_count(R, WK_VC_intersection_queries, 1);
+    wk_count(R, WK_VC_segments_scanned, A->n_live - 1);
     return WK_OK;
 }
 
@@ -588,10 +588,10 @@ wk_status wk_arrangement_cache_next_after(wk_run *R, wk_arrangement *A, uint32_t
     const wk_arr_seg *Q = &A->seg[A->ids[seg].slot];
     wk_arr_cache *C = &A->ids[seg].cache;
     if (cache_lookup(A, Q, C, s_from, after, c)) {
-        wk_notify_cache(R, WK_C_HIT);
+        wk_count(R, WK_VC_cache_hits, 1);
         return WK_OK;
     }
-    wk_notify_cache(R, WK_C_MISS);
+    wk_count(R, WK_VC_cache_misses, 1);
     cache_drop(R, A, C);
     uint32_t k = R->opt.k ? R->opt.k : 1;
     uint32_t room = k < A->n_live ? k : A->n_live;
@@ -600,7 +600,7 @@ wk_status wk_arrangement_cache_next_after(wk_run *R, wk_arrangement *A, uint32_t
     uint32_t n;
     st = wk_arrangement_next_crossings_after(R, A, seg, s_from, after, k, A->scratch, &n);
     if (st != WK_OK) return st;
-    wk_notify_cache(R, WK_C_REFILL);
+    wk_count(R, WK_VC_cache_refills, 1);
     if (n) {
         C->e = WK_NEW_ARRAY(R, wk_arr_centry, n);
         if (!C->e) return R->err.code;

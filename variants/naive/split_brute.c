@@ -1,12 +1,11 @@
 /*
-** split_brute.c: the brute-force split finder (engine/wavefront.h): a
-** reflex vertex is tested against every piece of its wavefront cycle.
-** Shared because two variants use it: naive (it is the reference) and
-** monotone (its fallback where 001's merge cannot certify its result).
+** split_brute.c: the reference variant's split finder (the finder
+** interface of engine/wavefront.h): a reflex vertex is tested against every
+** piece of its wavefront cycle.
 ** Cost: O(cycle) per reflex vertex whose target disappears,
 ** O(new pieces) per reflex vertex of a touched cycle otherwise.
 */
-#include "wavefront.h"
+#include "naive.h"
 
 /* Every piece of vi's cycle. */
 static void brute_full(void *ud, wk_wavefront *W, uint32_t vi) {
@@ -29,6 +28,6 @@ static void brute_incremental(void *ud, wk_wavefront *W, uint32_t vi) {
     wk_wavefront_offer_split(W, vi, best, bp, ta, tb);
 }
 
-const wk_split_finder wk_split_finder_brute_force = {
+const wk_split_finder naive_split_finder = {
     brute_full, brute_incremental, NULL, NULL, NULL, NULL, false,
 };

@@ -47,8 +47,7 @@
 ** inserts/removes, queries, scanned segments, cache hits, misses, refills and
 ** invalidations, the initial crossings of A(P).
 */
-#include "../variant.h"
-#include "arrangement.h"
+#include "bisector_arrangement.h"
 #include "event_queue.h"
 #include "wavefront.h"
 
@@ -406,7 +405,7 @@ static wk_status remove_segment(ar_state *A, uint32_t si) {
 ** cycle, or a ray through a vertex that stays ambiguous). */
 static void brute_split(wk_wavefront *W, uint32_t v) {
     wk_event ev = {W->t_now, 0, 0, v, WK_NONE, WK_NONE};
-    wk_notify_event(W->R, WK_EV_BRUTE_SPLIT, &ev);
+    wk_notify_event(W->R, WK_VC_brute_force_split_scans, &ev);
     wk_wavefront_split_scan(W, v);
 }
 
@@ -601,7 +600,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
         uint32_t a = S->ev_end ? S->pb : W->v[S->pa].prev;
         unlink_f(A, si);
         link_f(A, W, si, a);
-        wk_notify_event(R, WK_EV_SWITCH, &ev);
+        wk_notify_event(R, WK_VC_switch_events, &ev);
         seg_event(A, W, si);
         /* Over a convex vertex F simply continues on the next piece.  At a
         ** reflex vertex (or when F would bounce straight back) the first
@@ -626,7 +625,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
     if (S->ev_kind == AR_START) {
         /* F reaches the crossing with s' */
         wk_crossing x = S->xf;
-        wk_notify_event(R, WK_EV_START, &ev);
+        wk_notify_event(R, WK_VC_start_events, &ev);
         double lam = S->len - x.s;
         /* ids are handed out in insertion order, one per segment: id == index */
         uint32_t sj = x.other < A->n_s && A->s[x.other].v != WK_NONE ? x.other : WK_NONE;
@@ -644,7 +643,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
     }
     /* AR_FRONT: v reaches the crossing with s' */
     wk_crossing x = S->xv;
-    wk_notify_event(R, WK_EV_START, &ev);
+    wk_notify_event(R, WK_VC_start_events, &ev);
     uint32_t sj = x.other < A->n_s && A->s[x.other].v != WK_NONE ? x.other : WK_NONE;
     if (sj != WK_NONE) {
         ar_seg *T = &A->s[sj];
@@ -695,9 +694,13 @@ static wk_status arrangement_run(wk_run *R, const wk_polygon *P, wk_skeleton **o
     return st;
 }
 
+static const wk_counter_def ar_counters[] = WK_VARIANT_COUNTER_TABLE(AR_COUNTER_LIST);
+
 const wk_variant wk_variant_arrangement = {
     "arrangement",
     "bisector arrangement A(P) with the next-k-crossings cache (--k)",
     WK_VARIANT_WEIGHTS | WK_VARIANT_USES_K,
+    ar_counters,
+    sizeof ar_counters / sizeof ar_counters[0],
     arrangement_run,
 };

@@ -1,5 +1,5 @@
 /*
-** wskel.c: the command-line front end (bin/wskel).
+** main.c: the command-line front end (bin/wskel).
 ** Reads one polygon, runs one variant, optionally validates, writes one
 ** output.  Output goes to FILE.tmp.PID and is renamed only on success, so a
 ** failed run leaves no partial file.  An existing FILE that is not a regular
@@ -40,6 +40,10 @@ static const char usage_text[] =
     "                     'lower' (default, the lower weight edge survives, as in\n"
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
     "  --threads N        OpenMP threads for variants that use them (default 1)\n"
+    "  --verbose          on failure, also say where in wskel it was raised\n"
+    "  --list-variants    the variants, one per line: name and summary\n"
+    "  --list-counters    the counters of --variant (default naive), one per line:\n"
+    "                     name, tab, meaning (the keys of the JSON stats)\n"
     "  --help             this text\n"
     "\n"
     "exit codes: 0 ok, 1 invalid input, 2 the algorithm failed or does not apply\n"
@@ -53,10 +57,13 @@ static int usage_error(const char *fmt, const char *arg) {
     return 64;
 }
 
-static int report(wk_run *R) {
+static int report(wk_run *R, bool verbose) {
     char buf[1024];
     wk_error_format(R, buf, sizeof buf);
     fprintf(stderr, "wskel: %s\n", buf);
+    if (verbose && R->err.src_file)
+        fprintf(stderr, "wskel: (%s, raised at %s:%d)\n", wk_status_name(R->err.code),
+                R->err.src_file, R->err.src_line);
     return wk_status_exit_code(R->err.code);
 }
 
@@ -86,7 +93,7 @@ static int parse_offsets(const char *s, double **out, uint32_t *n) {
 int main(int argc, char **argv) {
     const char *variant = "naive", *format = "json", *outpath = NULL, *input = NULL;
     const char *offsets_arg = NULL;
-    bool check = true, stats = false, k_given = false;
+    bool check = true, stats = false, k_given = false, verbose = false, list_counters = false;
     uint32_t k = 1;
     wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
     int threads = 1;
@@ -102,8 +109,13 @@ int main(int argc, char **argv) {
             return 0;
         } else if (!strcmp(a, "--list-variants")) {
             for (size_t j = 0; wk_variant_at(j); j++)
-                printf("%-12s %s\n", wk_variant_at(j)->name, wk_variant_at(j)->summary);
+                printf("%-12s %s\n", wk_variant_name(wk_variant_at(j)),
+                       wk_variant_summary(wk_variant_at(j)));
             return 0;
+        } else if (!strcmp(a, "--list-counters")) {
+            list_counters = true;
+        } else if (!strcmp(a, "--verbose")) {
+            verbose = true;
         } else if (!strcmp(a, "--variant")) {
             NEED_ARG();
             variant = argv[++i];
@@ -161,13 +173,18 @@ int main(int argc, char **argv) {
         }
 #undef NEED_ARG
     }
-    if (!input) return usage_error("%s", "no input file given");
     const wk_variant *V = wk_variant_find(variant);
     if (!V) return usage_error("unknown variant '%s' (see --list-variants)", variant);
+    if (list_counters) {
+        for (uint32_t j = 0; j < wk_counter_count(V); j++)
+            printf("%s\t%s\n", wk_counter_def_at(V, j)->name, wk_counter_def_at(V, j)->meaning);
+        return 0;
+    }
+    if (!input) return usage_error("%s", "no input file given");
     if (offsets_arg && strcmp(format, "svg") != 0)
         fprintf(stderr, "wskel: note: --offsets only affects --format svg\n");
-    if (k_given && !(V->flags & WK_VARIANT_USES_K))
-        fprintf(stderr, "wskel: note: variant %s ignores --k\n", V->name);
+    if (k_given && !(wk_variant_flags(V) & WK_VARIANT_USES_K))
+        fprintf(stderr, "wskel: note: variant %s ignores --k\n", wk_variant_name(V));
     double *offsets = NULL;
     uint32_t n_offsets = 0;
     if (offsets_arg && parse_offsets(offsets_arg, &offsets, &n_offsets) != 0)
@@ -176,7 +193,6 @@ int main(int argc, char **argv) {
 
     wk_run R;
     wk_run_init(&R);
-    R.opt.variant = V->name;
     R.opt.k = k;
     R.opt.collinear = collinear;
     R.opt.threads = threads;
@@ -189,27 +205,27 @@ int main(int argc, char **argv) {
     size_t peak = 0;
 
     if (wk_polygon_read_file(&R, input, &P) != WK_OK) {
-        rc = report(&R);
+        rc = report(&R, verbose);
         goto done;
     }
-    if (!(V->flags & WK_VARIANT_WEIGHTS)) {
+    if (!(wk_variant_flags(V) & WK_VARIANT_WEIGHTS)) {
         for (uint32_t i = 0; i < P->n; i++)
             if (P->w[i] != 1.0) {
                 WK_FAIL(&R, WK_EALGO, P->name, 0,
                         "variant %s supports unit weights only (edge %u has weight %g)",
-                        V->name, wk_polygon_input_edge(P, i), P->w[i]);
-                rc = report(&R);
+                        wk_variant_name(V), wk_polygon_input_edge(P, i), P->w[i]);
+                rc = report(&R, verbose);
                 goto done;
             }
     }
     if (wk_solve(&R, V, P, &S, &time_s, &peak) != WK_OK) {
-        rc = report(&R);
+        rc = report(&R, verbose);
         goto done;
     }
     if (check) {
         wk_validate_report rep;
         if (wk_validate(&R, P, S, 0, &rep) != WK_OK) {
-            rc = report(&R);
+            rc = report(&R, verbose);
             goto done;
         }
         if (stats)
@@ -218,11 +234,11 @@ int main(int argc, char **argv) {
     }
 
     if (wk_output_open(&R, &out, outpath) != WK_OK) {
-        rc = report(&R);
+        rc = report(&R, verbose);
         goto done;
     }
-    wk_run_info info = {V->name, (V->flags & WK_VARIANT_USES_K) ? k : WK_NONE, time_s, peak,
-                        &R.counters};
+    wk_run_info info = {wk_variant_name(V), (wk_variant_flags(V) & WK_VARIANT_USES_K) ? k : WK_NONE, time_s, peak,
+                        &R.counters, V};
     wk_status st;
     if (!strcmp(format, "json")) st = wk_write_json(&R, out.f, P, S, &info);
     else if (!strcmp(format, "text")) st = wk_write_text(&R, out.f, P, S);
@@ -231,17 +247,17 @@ int main(int argc, char **argv) {
     else st = wk_write_vtp(&R, out.f, P, S);
     st = wk_output_close(&R, &out, st);
     if (st != WK_OK) {
-        rc = report(&R);
+        rc = report(&R, verbose);
         goto done;
     }
     if (stats) {
-        fprintf(stderr, "variant %s  n %u  r %u  nodes %u  arcs %u\n", V->name, P->n, P->r,
+        fprintf(stderr, "variant %s  n %u  r %u  nodes %u  arcs %u\n", wk_variant_name(V), P->n, P->r,
                 S->n_nodes, S->n_arcs);
         fprintf(stderr, "time_s %.6f  peak_bytes %zu\n", time_s, peak);
-#define WK_PRINT_COUNTER(name) \
-    if (R.counters.name) fprintf(stderr, "%-32s %llu\n", #name, (unsigned long long)R.counters.name);
-        WK_COUNTER_LIST(WK_PRINT_COUNTER)
-#undef WK_PRINT_COUNTER
+        for (uint32_t j = 0; j < wk_counter_count(V); j++)
+            if (R.counters.c[j])
+                fprintf(stderr, "%-32s %llu\n", wk_counter_def_at(V, j)->name,
+                        (unsigned long long)R.counters.c[j]);
     }
 
 done:
