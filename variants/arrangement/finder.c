@@ -1,5 +1,5 @@
 /*
-** arrangement.c: the bisector-arrangement variant (000, section 3): the
+** finder.c: the bisector-arrangement variant (000, section 3): the
 ** shared kinetic wavefront (engine/wavefront.c) whose split events are found
 ** through the arrangement A(P) of reflex-vertex segments instead of a search
 ** over all wavefront pieces.
@@ -28,13 +28,13 @@
 **     part of s', v's piece facing v' now cuts s' there.
 ** The next crossing along s in either direction comes from a next-crossing
 ** query over the current segments, served by the per-segment k cache of
-** engine/arrangement.c (000, section 3.2: one scan yields the next k
+** bisector_arrangement.c (000, section 3.2: one scan yields the next k
 ** crossings; k = R->opt.k, --k max caches all).  Two arrangements hold the
 ** same segments, one oriented from v's end (front events walk it forward),
 ** one from the far end (F walks it forward).
 **
 ** After every group of wavefront events only what the group touched is
-** revisited (W->dead, W->fresh): segments of dead reflex vertices are
+** revisited (wk_wf_last_group): segments of dead reflex vertices are
 ** removed; new reflex vertices get a segment (a ray against their wavefront
 ** cycle, O(n), 000's O(n) insertion); an F whose piece changed is put on the
 ** new piece at the same place on s (the wavefront moves continuously), or,
@@ -102,12 +102,12 @@ static double lambda_of(const ar_seg *S, wk_point p) {
 }
 
 static double lambda_v(const wk_wavefront *W, const ar_seg *S, double t) {
-    return lambda_of(S, wk_wf_pos(&W->v[S->v], t));
+    return lambda_of(S, wk_wf_position(W, S->v, t));
 }
 
 static double lambda_f(const wk_wavefront *W, const ar_seg *S, double t) {
     if (S->pa == WK_NONE) return NAN;
-    return lambda_on_line(S, &W->L[W->v[S->pa].eout], t);
+    return lambda_on_line(S, wk_wf_line(W, wk_wf_edge_out(W, S->pa)), t);
 }
 
 /* ------------------------------------------------------------ bookkeeping */
@@ -149,7 +149,7 @@ static void unlink_f(ar_state *A, uint32_t si) {
 static void link_f(ar_state *A, wk_wavefront *W, uint32_t si, uint32_t a) {
     ar_seg *S = &A->s[si];
     S->pa = a;
-    S->pb = W->v[a].next;
+    S->pb = wk_wf_next(W, a);
     S->prev_on = WK_NONE;
     S->next_on = A->fhead[a];
     if (S->next_on != WK_NONE) A->s[S->next_on].prev_on = si;
@@ -160,15 +160,15 @@ static void link_f(ar_state *A, wk_wavefront *W, uint32_t si, uint32_t a) {
 ** time t: lambda, or INFINITY; *mu: the position along the piece (0..1). */
 static double hit_piece(const wk_wavefront *W, const ar_seg *S, uint32_t a, double t,
                         double lambda0, double *mu) {
-    uint32_t b = W->v[a].next;
-    wk_point pa = wk_wf_pos(&W->v[a], t), pb = wk_wf_pos(&W->v[b], t);
+    uint32_t b = wk_wf_next(W, a);
+    wk_point pa = wk_wf_position(W, a, t), pb = wk_wf_position(W, b, t);
     double dx = pb.x - pa.x, dy = pb.y - pa.y;
     double den = S->u.x * dy - S->u.y * dx;
     if (fabs(den) < 1e-300) return INFINITY;
     double ex = pa.x - S->o.x, ey = pa.y - S->o.y;
     double lam = (ex * dy - ey * dx) / den;
     *mu = (ex * S->u.y - ey * S->u.x) / den;
-    if (*mu < -1e-12 || *mu > 1 + 1e-12 || lam <= lambda0 + W->eps_d * 1e-3) return INFINITY;
+    if (*mu < -1e-12 || *mu > 1 + 1e-12 || lam <= lambda0 + wk_wf_eps_d(W) * 1e-3) return INFINITY;
     return lam;
 }
 
@@ -179,8 +179,8 @@ static uint32_t shoot_at(const wk_wavefront *W, const ar_seg *S, uint32_t v, dou
                          double lambda0, bool *at_end) {
     uint32_t best = WK_NONE;
     double bl = INFINITY, mu;
-    for (uint32_t a = W->v[v].next; a != v; a = W->v[a].next) {
-        if (W->v[a].next == v) continue; /* v's own pieces */
+    for (uint32_t a = wk_wf_next(W, v); a != v; a = wk_wf_next(W, a)) {
+        if (wk_wf_next(W, a) == v) continue; /* v's own pieces */
         double lam = hit_piece(W, S, a, t, lambda0, &mu);
         if (lam < bl) {
             bl = lam;
@@ -199,8 +199,8 @@ static uint32_t shoot(const wk_wavefront *W, const ar_seg *S, uint32_t v, double
     bool at_end = false;
     uint32_t a = shoot_at(W, S, v, t, lambda0, &at_end);
     if (a != WK_NONE && at_end) {
-        double later = t + 1e3 * W->eps_t;
-        uint32_t b = shoot_at(W, S, v, later, lambda_of(S, wk_wf_pos(&W->v[v], later)), &at_end);
+        double later = t + 1e3 * wk_wf_eps_t(W);
+        uint32_t b = shoot_at(W, S, v, later, lambda_of(S, wk_wf_position(W, v, later)), &at_end);
         if (b != WK_NONE) a = b;
     }
     return a;
@@ -212,20 +212,19 @@ static uint32_t shoot(const wk_wavefront *W, const ar_seg *S, uint32_t v, double
 ** (start), and at which v reaches its next crossing (front). */
 static void seg_event(ar_state *A, wk_wavefront *W, uint32_t si) {
     ar_seg *S = &A->s[si];
-    double now = W->t_now;
+    double now = wk_wf_now(W);
     S->ev_t = INFINITY;
     S->ev_kind = AR_SWITCH;
     if (S->v == WK_NONE) return;
     if (S->pa != WK_NONE) {
-        const wk_wf_vertex *Pa = &W->v[S->pa], *Pb = &W->v[S->pb];
-        const wk_offset_line *L = &W->L[Pa->eout];
+        const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, S->pa));
         /* F on the piece's line: sigma(t) = (F(t) - a(t)) . u_e, linear in t */
         double l0 = lambda_on_line(S, L, now), l1 = lambda_on_line(S, L, now + 1);
         if (isfinite(l0) && isfinite(l1)) {
             wk_point f0 = {S->o.x + l0 * S->u.x, S->o.y + l0 * S->u.y};
             wk_point f1 = {S->o.x + l1 * S->u.x, S->o.y + l1 * S->u.y};
-            wk_point a0 = wk_wf_pos(Pa, now), a1 = wk_wf_pos(Pa, now + 1);
-            wk_point b0 = wk_wf_pos(Pb, now), b1 = wk_wf_pos(Pb, now + 1);
+            wk_point a0 = wk_wf_position(W, S->pa, now), a1 = wk_wf_position(W, S->pa, now + 1);
+            wk_point b0 = wk_wf_position(W, S->pb, now), b1 = wk_wf_position(W, S->pb, now + 1);
             double sa0 = (f0.x - a0.x) * L->ux + (f0.y - a0.y) * L->uy;
             double sa1 = (f1.x - a1.x) * L->ux + (f1.y - a1.y) * L->uy;
             double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
@@ -253,8 +252,8 @@ static void seg_event(ar_state *A, wk_wavefront *W, uint32_t si) {
         }
     }
     if (S->xv.other != WK_NONE) {
-        const wk_wf_vertex *V = &W->v[S->v];
-        double rate = V->vel.x * S->u.x + V->vel.y * S->u.y;
+        wk_point vel = wk_wf_velocity(W, S->v);
+        double rate = vel.x * S->u.x + vel.y * S->u.y;
         double lv = lambda_v(W, S, now);
         if (rate > 0) {
             double te = now + (S->xv.s > lv ? S->xv.s - lv : 0) / rate;
@@ -270,7 +269,7 @@ static wk_status schedule_seg(ar_state *A, wk_wavefront *W, uint32_t si) {
         wk_event_queue_remove(A->R, &A->Q, si);
         return WK_OK;
     }
-    double t = S->ev_t < W->t_now ? W->t_now : S->ev_t;
+    double t = S->ev_t < wk_wf_now(W) ? wk_wf_now(W) : S->ev_t;
     return wk_event_queue_set(A->R, &A->Q, si, (wk_event_key){t, S->ev_kind});
 }
 
@@ -313,28 +312,28 @@ static wk_status place_f(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
 static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double t,
                                 const wk_ray_hit *hit, uint32_t *out) {
     wk_run *R = A->R;
-    const wk_wf_vertex *V = &W->v[v];
-    double sp = hypot(V->vel.x, V->vel.y);
-    if (!(sp > 0)) return WK_FAIL(R, WK_EALGO, W->P->name, 0, "arrangement: reflex vertex at rest");
+    wk_point vel = wk_wf_velocity(W, v);
+    double sp = hypot(vel.x, vel.y);
+    if (!(sp > 0)) return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "arrangement: reflex vertex at rest");
     if (WK_GROW(R, A->s, A->cap_s, A->n_s + 1) != WK_OK) return R->err.code;
     uint32_t si = A->n_s;
     ar_seg *S = &A->s[si];
     memset(S, 0, sizeof *S);
     S->v = v;
-    S->o = wk_wf_pos(V, t);
-    S->u = (wk_point){V->vel.x / sp, V->vel.y / sp};
+    S->o = wk_wf_position(W, v, t);
+    S->u = (wk_point){vel.x / sp, vel.y / sp};
     S->pa = S->pb = S->next_on = S->prev_on = WK_NONE;
     S->xf.other = S->xv.other = WK_NONE;
-    /* At the start the grid ray shooter of engine/arrangement.c already
+    /* At the start the grid ray shooter of engine/ray_shoot.h already
     ** found the boundary edge hit; a hit on a vertex (a corner) is left to
     ** the exact shot below.  Later segments shoot against their cycle. */
     uint32_t a = WK_NONE;
-    if (hit && hit->edge != WK_NONE && hit->edge < W->nv && W->v[hit->edge].alive &&
-        W->v[hit->edge].t0 == 0 && W->v[hit->edge].eout == hit->edge)
+    if (hit && hit->edge != WK_NONE && hit->edge < wk_wf_vertex_count(W) && wk_wf_alive(W, hit->edge) &&
+        wk_wf_start_time(W, hit->edge) == 0 && wk_wf_edge_out(W, hit->edge) == hit->edge)
         a = hit->edge;
     else
         a = shoot(W, S, v, t, 0);
-    double lf = a == WK_NONE ? NAN : lambda_on_line(S, &W->L[W->v[a].eout], t);
+    double lf = a == WK_NONE ? NAN : lambda_on_line(S, wk_wf_line(W, wk_wf_edge_out(W, a)), t);
     S->len = isfinite(lf) && lf > 0 ? lf : 0;
     uint32_t id1, id2;
     wk_point far = {S->o.x + S->len * S->u.x, S->o.y + S->len * S->u.y};
@@ -344,7 +343,7 @@ static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double
     S = &A->s[si];
     S->id = id1;
     if (id1 != si || id2 != si)
-        return WK_FAIL(R, WK_EALGO, W->P->name, 0, "arrangement: segment ids out of step");
+        return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "arrangement: segment ids out of step");
     A->n_s++;
     A->seg_of[v] = si;
     if (a != WK_NONE) link_f(A, W, si, a);
@@ -356,7 +355,7 @@ static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double
 /* Fetch the next crossings of segment si from where v and F are now. */
 static wk_status arm_segment(ar_state *A, wk_wavefront *W, uint32_t si) {
     ar_seg *S = &A->s[si];
-    double t = W->t_now, lf = lambda_f(W, S, t), lv = lambda_v(W, S, t);
+    double t = wk_wf_now(W), lf = lambda_f(W, S, t), lv = lambda_v(W, S, t);
     if (fetch_xf(A, si, isfinite(lf) ? lf : S->len, WK_NONE) != WK_OK ||
         fetch_xv(A, si, lv, WK_NONE) != WK_OK)
         return A->R->err.code;
@@ -367,7 +366,7 @@ static wk_status arm_segment(ar_state *A, wk_wavefront *W, uint32_t si) {
 ** v or F and the next crossing that one had fetched: fetch again. */
 static wk_status notify_insert(ar_state *A, wk_wavefront *W, uint32_t si) {
     const wk_arr_seg *N = wk_arrangement_get(&A->fwd, A->s[si].id);
-    double t = W->t_now;
+    double t = wk_wf_now(W);
     for (uint32_t j = 0; j < A->n_s; j++) {
         if (j == si || A->s[j].v == WK_NONE) continue;
         const wk_arr_seg *T = wk_arrangement_get(&A->fwd, A->s[j].id);
@@ -404,9 +403,9 @@ static wk_status remove_segment(ar_state *A, uint32_t si) {
 ** reflex vertex whose F is unknown (its ray met no piece: a vanishing
 ** cycle, or a ray through a vertex that stays ambiguous). */
 static void brute_split(wk_wavefront *W, uint32_t v) {
-    wk_event ev = {W->t_now, 0, 0, v, WK_NONE, WK_NONE};
-    wk_notify_event(W->R, WK_VC_brute_force_split_scans, &ev);
-    wk_wavefront_split_scan(W, v);
+    wk_event ev = {wk_wf_now(W), 0, 0, v, WK_NONE, WK_NONE};
+    wk_notify_event(wk_wf_run(W), WK_VC_brute_force_split_scans, &ev);
+    wk_wf_split_scan(W, v);
 }
 
 /* v's split: v meets F along its segment. */
@@ -417,19 +416,19 @@ static void ar_full(void *ud, wk_wavefront *W, uint32_t v) {
         return;
     }
     const ar_seg *S = &A->s[A->seg_of[v]];
-    if (S->pa == WK_NONE || !W->v[S->pa].alive || W->v[S->pa].next != S->pb) {
+    if (S->pa == WK_NONE || !wk_wf_alive(W, S->pa) || wk_wf_next(W, S->pa) != S->pb) {
         brute_split(W, v);
         return;
     }
-    double t0 = W->t_now;
+    double t0 = wk_wf_now(W);
     double lv0 = lambda_v(W, S, t0), lv1 = lambda_v(W, S, t0 + 1);
     double lf0 = lambda_f(W, S, t0), lf1 = lambda_f(W, S, t0 + 1);
     if (!isfinite(lf0) || !isfinite(lf1)) return;
     double gap = lf0 - lv0, rate = (lf1 - lf0) - (lv1 - lv0);
     if (!(rate < 0)) return;
     double t = t0 + (gap > 0 ? gap : 0) / -rate;
-    wk_point p = wk_wf_pos(&W->v[v], t);
-    wk_wavefront_offer_split(W, v, t, p, S->pa, S->pb);
+    wk_point p = wk_wf_position(W, v, t);
+    wk_wf_offer_split(W, v, t, p, S->pa, S->pb);
 }
 
 static void ar_incremental(void *ud, wk_wavefront *W, uint32_t v) { ar_full(ud, W, v); }
@@ -437,8 +436,8 @@ static void ar_incremental(void *ud, wk_wavefront *W, uint32_t v) { ar_full(ud, 
 static wk_status ar_start(void *ud, wk_wavefront *W) {
     ar_state *A = ud;
     wk_run *R = A->R;
-    const wk_polygon *P = W->P;
-    if (ensure_vertex_arrays(A, W->nv) != WK_OK) return R->err.code;
+    const wk_polygon *P = wk_wf_polygon(W);
+    if (ensure_vertex_arrays(A, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
     wk_aseg *segs = NULL;
     uint32_t r = 0;
     uint64_t crossings = 0;
@@ -447,7 +446,7 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
     /* all segments first, so that each one's first crossings see the others */
     for (uint32_t i = 0; st == WK_OK && i < r; i++) {
         uint32_t v = segs[i].vertex, si;
-        if (!W->v[v].alive || !W->v[v].reflex) continue; /* changed by the collinear rule */
+        if (!wk_wf_alive(W, v) || !wk_wf_reflex(W, v)) continue; /* changed by the collinear rule */
         st = create_segment(A, W, v, 0.0, &segs[i].hit, &si);
     }
     if (segs) WK_FREE_ARRAY(R, segs, r);
@@ -461,17 +460,20 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
 ** True if F was placed here (its next crossing is unchanged: same place). */
 static bool relocate_locally(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
     ar_seg *S = &A->s[si];
-    double old = lambda_on_line(S, &W->L[W->v[S->pa].eout], t);
+    double old = lambda_on_line(S, wk_wf_line(W, wk_wf_edge_out(W, S->pa)), t);
     if (!isfinite(old)) return false;
     double lv = lambda_v(W, S, t), best = INFINITY, mu;
     uint32_t pick = WK_NONE;
-    for (uint32_t i = 0; i < W->n_fresh; i++) {
-        uint32_t g = W->fresh[i];
-        if (!W->v[g].alive) continue;
-        uint32_t two[2] = {g, W->v[g].prev};
+    const uint32_t *fresh, *ended;
+    uint32_t n_fresh, n_ended;
+    wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    for (uint32_t i = 0; i < n_fresh; i++) {
+        uint32_t g = fresh[i];
+        if (!wk_wf_alive(W, g)) continue;
+        uint32_t two[2] = {g, wk_wf_prev(W, g)};
         for (int j = 0; j < 2; j++) {
             uint32_t a = two[j];
-            if (a == S->v || W->v[a].next == S->v) continue;
+            if (a == S->v || wk_wf_next(W, a) == S->v) continue;
             double lam = hit_piece(W, S, a, t, lv, &mu);
             if (lam < best && mu > 1e-9 && mu < 1 - 1e-9) {
                 best = lam;
@@ -479,7 +481,7 @@ static bool relocate_locally(ar_state *A, wk_wavefront *W, uint32_t si, double t
             }
         }
     }
-    if (pick == WK_NONE || !(fabs(best - old) <= 1e3 * W->eps_d)) return false;
+    if (pick == WK_NONE || !(fabs(best - old) <= 1e3 * wk_wf_eps_d(W))) return false;
     unlink_f(A, si);
     link_f(A, W, si, pick);
     return true;
@@ -494,17 +496,20 @@ static wk_status queue_todo(ar_state *A, uint32_t si) {
 }
 
 /* After a group, only what the group touched: the vertices it ended and
-** the vertices whose next changed (W->dead, W->fresh). */
+** the vertices whose next changed (wk_wf_last_group). */
 static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
     ar_state *A = ud;
     wk_run *R = A->R;
-    if (ensure_vertex_arrays(A, W->nv) != WK_OK) return R->err.code;
+    if (ensure_vertex_arrays(A, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
+    const uint32_t *fresh, *ended;
+    uint32_t n_fresh, n_ended;
+    wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
     A->stamp++;
     A->n_todo = 0;
     /* pieces that ended or changed: their Fs are placed again */
     for (int pass = 0; pass < 2; pass++) {
-        uint32_t n = pass ? W->n_fresh : W->n_dead;
-        const uint32_t *list = pass ? W->fresh : W->dead;
+        uint32_t n = pass ? n_fresh : n_ended;
+        const uint32_t *list = pass ? fresh : ended;
         for (uint32_t i = 0; i < n; i++) {
             uint32_t a = list[i];
             if (a >= A->cap_v) continue;
@@ -513,8 +518,8 @@ static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
         }
     }
     /* segments of dead reflex vertices leave A(P) */
-    for (uint32_t i = 0; i < W->n_dead; i++) {
-        uint32_t d = W->dead[i];
+    for (uint32_t i = 0; i < n_ended; i++) {
+        uint32_t d = ended[i];
         if (d < A->cap_v && A->seg_of[d] != WK_NONE && remove_segment(A, A->seg_of[d]) != WK_OK)
             return R->err.code;
     }
@@ -527,24 +532,24 @@ static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < A->n_todo; i++) {
         uint32_t si = A->todo[i];
         ar_seg *S = &A->s[si];
-        if (S->v == WK_NONE || !W->v[S->v].alive) continue;
-        if (S->pa != WK_NONE && W->v[S->pa].alive && W->v[S->pa].next == S->pb) continue;
+        if (S->v == WK_NONE || !wk_wf_alive(W, S->v)) continue;
+        if (S->pa != WK_NONE && wk_wf_alive(W, S->pa) && wk_wf_next(W, S->pa) == S->pb) continue;
         if (S->pa != WK_NONE && relocate_locally(A, W, si, t)) {
-            if (schedule_seg(A, W, si) != WK_OK || wk_wavefront_reschedule(W, A->s[si].v) != WK_OK)
+            if (schedule_seg(A, W, si) != WK_OK || wk_wf_reschedule(W, A->s[si].v) != WK_OK)
                 return R->err.code;
             continue;
         }
         if (place_f(A, W, si, t) != WK_OK || schedule_seg(A, W, si) != WK_OK ||
-            wk_wavefront_reschedule(W, A->s[si].v) != WK_OK)
+            wk_wf_reschedule(W, A->s[si].v) != WK_OK)
             return R->err.code;
     }
     /* new reflex vertices get a segment */
-    for (uint32_t i = 0; i < W->n_fresh; i++) {
-        uint32_t v = W->fresh[i];
-        if (!W->v[v].alive || !W->v[v].reflex || A->seg_of[v] != WK_NONE) continue;
+    for (uint32_t i = 0; i < n_fresh; i++) {
+        uint32_t v = fresh[i];
+        if (!wk_wf_alive(W, v) || !wk_wf_reflex(W, v) || A->seg_of[v] != WK_NONE) continue;
         uint32_t si;
         if (create_segment(A, W, v, t, NULL, &si) != WK_OK || arm_segment(A, W, si) != WK_OK ||
-            notify_insert(A, W, si) != WK_OK || wk_wavefront_reschedule(W, v) != WK_OK)
+            notify_insert(A, W, si) != WK_OK || wk_wf_reschedule(W, v) != WK_OK)
             return R->err.code;
     }
     return WK_OK;
@@ -564,7 +569,7 @@ static wk_status cut(ar_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     /* F' must approach v' along s'.  At a corner of the wavefront (X at an
     ** end of the piece) the piece may face away from v': then the ray shot
     ** decides. */
-    double t = W->t_now;
+    double t = wk_wf_now(W);
     double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
     if (!(l1 < l0)) {
         if (place_f(A, W, sj, t) != WK_OK) return A->R->err.code;
@@ -575,7 +580,7 @@ static wk_status cut(ar_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         return A->R->err.code;
     }
     if (schedule_seg(A, W, sj) != WK_OK) return A->R->err.code;
-    return wk_wavefront_reschedule(W, A->s[sj].v);
+    return wk_wf_reschedule(W, A->s[sj].v);
 }
 
 static wk_status ar_process_next(void *ud, wk_wavefront *W) {
@@ -583,21 +588,21 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
     wk_run *R = A->R;
     uint32_t si = wk_event_queue_pop(R, &A->Q);
     ar_seg *S = &A->s[si];
-    double t = W->t_now;
+    double t = wk_wf_now(W);
     /* Defensive: F bouncing between two pieces at one vertex would never
     ** end; every legitimate burst at one instant is bounded by the number of
     ** segment-piece incidences. */
     A->guard_n = t == A->guard_t ? A->guard_n + 1 : 0;
     A->guard_t = t;
-    if (A->guard_n > 16 * ((uint64_t)A->n_s + W->nv) + 1024)
-        return WK_FAIL(R, WK_EALGO, W->P->name, 0, "arrangement: no progress at t = %.17g", t);
+    if (A->guard_n > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024)
+        return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "arrangement: no progress at t = %.17g", t);
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
     if (S->v == WK_NONE) return WK_OK;
     if (S->ev_kind == AR_SWITCH) {
         /* F leaves its piece over one of the piece's ends */
         uint32_t old_pa = S->pa;
         uint32_t u = S->ev_end ? S->pb : S->pa; /* the vertex F passes */
-        uint32_t a = S->ev_end ? S->pb : W->v[S->pa].prev;
+        uint32_t a = S->ev_end ? S->pb : wk_wf_prev(W, S->pa);
         unlink_f(A, si);
         link_f(A, W, si, a);
         wk_notify_event(R, WK_VC_switch_events, &ev);
@@ -606,8 +611,8 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
         ** reflex vertex (or when F would bounce straight back) the first
         ** wavefront point along s may jump: shoot the ray again. */
         uint32_t v = A->s[si].v;
-        bool own = a == v || W->v[a].next == v; /* never F on v's own pieces */
-        if (own || W->v[u].reflex || (A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t)) {
+        bool own = a == v || wk_wf_next(W, a) == v; /* never F on v's own pieces */
+        if (own || wk_wf_reflex(W, u) || (A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t)) {
             if (place_f(A, W, si, t) != WK_OK) return R->err.code;
             /* The shot disagrees with the event (rounding right at a
             ** corner): F is left unknown, v's split is searched directly
@@ -620,7 +625,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
         }
         S = &A->s[si];
         if (schedule_seg(A, W, si) != WK_OK) return R->err.code;
-        return wk_wavefront_reschedule(W, S->v);
+        return wk_wf_reschedule(W, S->v);
     }
     if (S->ev_kind == AR_START) {
         /* F reaches the crossing with s' */
@@ -633,7 +638,7 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
             ar_seg *T = &A->s[sj];
             wk_point X = {S->o.x + lam * S->u.x, S->o.y + lam * S->u.y};
             double lx = lambda_of(T, X), lv = lambda_v(W, T, t), lf = lambda_f(W, T, t);
-            if (lx > lv - W->eps_d && (!isfinite(lf) || lx < lf - W->eps_d)) {
+            if (lx > lv - wk_wf_eps_d(W) && (!isfinite(lf) || lx < lf - wk_wf_eps_d(W))) {
                 if (cut(A, W, sj, S->pa, lx, S->id) != WK_OK) return R->err.code;
             }
         }
@@ -649,14 +654,14 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
         ar_seg *T = &A->s[sj];
         wk_point X = {S->o.x + x.s * S->u.x, S->o.y + x.s * S->u.y};
         double lx = lambda_of(T, X), lv = lambda_v(W, T, t), lf = lambda_f(W, T, t);
-        if (lx > lv - W->eps_d && (!isfinite(lf) || lx < lf - W->eps_d)) {
+        if (lx > lv - wk_wf_eps_d(W) && (!isfinite(lf) || lx < lf - wk_wf_eps_d(W))) {
             /* which of v's pieces faces v': the one whose crossing with s'
             ** moves towards v' */
-            uint32_t v = S->v, cand[2] = {W->v[v].prev, v}, pick = WK_NONE;
+            uint32_t v = S->v, cand[2] = {wk_wf_prev(W, v), v}, pick = WK_NONE;
             double best = INFINITY;
             for (int c = 0; c < 2; c++) {
-                double l1 = lambda_on_line(T, &W->L[W->v[cand[c]].eout], t + 1);
-                double l0 = lambda_on_line(T, &W->L[W->v[cand[c]].eout], t);
+                double l1 = lambda_on_line(T, wk_wf_line(W, wk_wf_edge_out(W, cand[c])), t + 1);
+                double l0 = lambda_on_line(T, wk_wf_line(W, wk_wf_edge_out(W, cand[c])), t);
                 if (isfinite(l0) && isfinite(l1) && l1 - l0 < best) {
                     best = l1 - l0;
                     pick = cand[c];

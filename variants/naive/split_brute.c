@@ -7,25 +7,28 @@
 */
 #include "naive.h"
 
-/* Every piece of vi's cycle. */
-static void brute_full(void *ud, wk_wavefront *W, uint32_t vi) {
+/* Every piece of v's cycle. */
+static void brute_full(void *ud, wk_wavefront *W, uint32_t v) {
     (void)ud;
-    wk_wavefront_split_scan(W, vi);
+    wk_wf_split_scan(W, v);
 }
 
-/* Only pieces next to fresh vertices are new. */
-static void brute_incremental(void *ud, wk_wavefront *W, uint32_t vi) {
+/* Only pieces next to the vertices the last group created or relinked are
+** new: the rest were tested when v's candidate was computed. */
+static void brute_incremental(void *ud, wk_wavefront *W, uint32_t v) {
     (void)ud;
-    double best = W->v[vi].ev_t;
-    wk_point bp = W->v[vi].ev_p;
-    uint32_t ta = WK_NONE, tb = WK_NONE;
-    for (uint32_t j = 0; j < W->n_fresh; j++) {
-        uint32_t g = W->fresh[j];
-        if (!W->v[g].alive) continue;
-        wk_wavefront_split_test(W, vi, g, &best, &bp, &ta, &tb);
-        wk_wavefront_split_test(W, vi, W->v[g].prev, &best, &bp, &ta, &tb);
+    const uint32_t *fresh, *ended;
+    uint32_t n_fresh, n_ended;
+    wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    wk_wf_split_search s;
+    wk_wf_split_begin(W, v, &s);
+    for (uint32_t j = 0; j < n_fresh; j++) {
+        uint32_t g = fresh[j];
+        if (!wk_wf_alive(W, g)) continue;
+        wk_wf_split_test(W, &s, g);
+        wk_wf_split_test(W, &s, wk_wf_prev(W, g));
     }
-    wk_wavefront_offer_split(W, vi, best, bp, ta, tb);
+    wk_wf_split_offer(W, &s);
 }
 
 const wk_split_finder naive_split_finder = {

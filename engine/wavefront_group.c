@@ -1,0 +1,972 @@
+/*
+** wavefront_group.c: the resolution of a group of simultaneous events (the
+** heart of the reference; see wavefront.c for the model).  All events
+** within the time tolerance of the earliest one form a group.  The group is
+** resolved by geometry, not by event type, which makes every degenerate
+** combination (multi-split, vanishing triangles and components, parallel
+** edges meeting, several events at one point) one code path; plan() runs
+** these steps, one function each:
+**   1. nodes: cluster the event points (distance tolerance) and collect the
+**      vertices that take part (plan_nodes);
+**   2. every vertex of the touched cycles within tolerance of a node arrives
+**      there (plan_arrivals); every piece passing through a node is cut
+**      there (plan_pinches, plan_seed_cuts);
+**   3. the cycles become directed sub-pieces between points (nodes or
+**      untouched vertices); zero-length sub-pieces vanish (edge events);
+**      two opposite sub-pieces between the same two nodes cancel and leave a
+**      skeleton arc (parallel edges that met) (plan_sub_pieces, plan_cancel);
+**   4. at each node the remaining incoming and outgoing sub-pieces are
+**      paired: an incoming one continues with the first outgoing one
+**      clockwise from it (the wavefront interior lies in that sector), and
+**      each pair becomes a new wavefront vertex (plan_slots, plan_pairs);
+**   5. a vertex that meets the group without being at a node (a zero-area
+**      triangle, a vertex on a cancelled stretch, overlapping antiparallel
+**      pieces, a zero-width spike) is made a node and the group is planned
+**      again (plan_force_touching, plan_force_overlaps, plan_pairs).
+** commit() then turns the plan into skeleton nodes, arcs and new vertices.
+** Collinear edges of different weight that become adjacent cannot share a
+** moving vertex (000, section 1): the losing edge (higher weight by default,
+** lower with --collinear higher) is removed at once, leaving an arc along it
+** at the current time, and its far neighbour is joined to the winner
+** (wf_collinear_rule).
+**
+** Tolerances: WK_TOL_REL times the polygon's scale for distances, divided by
+** the largest weight for times (wskel.h).
+*/
+#include "wavefront_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------ clusters */
+
+static uint32_t find_cluster_within(const wk_wavefront *W, wk_point p, double r) {
+    double e2 = r * r;
+    for (uint32_t k = 0; k < W->n_cl; k++)
+        if (wf_dist2(W->cl[k].p, p) <= e2) return k;
+    return WK_NONE;
+}
+
+static uint32_t find_cluster(const wk_wavefront *W, wk_point p) {
+    double e2 = W->eps_d * W->eps_d;
+    for (uint32_t k = 0; k < W->n_cl; k++)
+        if (wf_dist2(W->cl[k].p, p) <= e2) return k;
+    return WK_NONE;
+}
+
+static wk_status add_cluster(wk_wavefront *W, wk_point p, uint32_t *k) {
+    *k = find_cluster(W, p);
+    if (*k != WK_NONE) return WK_OK;
+    if (WK_GROW(W->R, W->cl, W->cap_cl, W->n_cl + 1) != WK_OK) return W->R->err.code;
+    W->cl[W->n_cl] = (wk_wf_cluster){p, WK_NONE, 0, 0, 0, 0, 0, 0};
+    *k = W->n_cl++;
+    return WK_OK;
+}
+
+/* ----------------------------------------------------------- collect */
+
+static double angle_of(const wk_offset_line *L, bool incoming) {
+    return incoming ? atan2(-L->uy, -L->ux) : atan2(L->uy, L->ux);
+}
+
+/* Clockwise turn from angle a to angle b in (0, 2 pi]. */
+static double cw_turn(double a, double b) {
+    double d = a - b;
+    while (d <= 1e-13) d += TWO_PI;
+    while (d > TWO_PI + 1e-13) d -= TWO_PI;
+    return d;
+}
+
+static wk_point point_pos(const wk_wavefront *W, uint32_t pt, double t) {
+    return IS_NODE(pt) ? W->cl[NODE_OF(pt)].p : wk_wf_pos(&W->v[pt], t);
+}
+
+static int cmp_pinch(const void *a, const void *b) {
+    const wk_wf_pinch *x = a, *y = b;
+    if (x->piece != y->piece) return x->piece < y->piece ? -1 : 1;
+    if (x->s != y->s) return x->s < y->s ? -1 : 1;
+    return x->node < y->node ? -1 : x->node > y->node;
+}
+
+/* Walk the cycles of the seeds (and forced vertices) into W->comp. */
+static wk_status push_local(wk_wavefront *W, uint32_t u) {
+    if (W->v[u].seen == W->stamp) return WK_OK;
+    W->v[u].seen = W->stamp;
+    W->v[u].at = WK_NONE;
+    W->v[u].cyc = 0;
+    return wf_push_u32(W->R, &W->comp, &W->n_comp, &W->cap_comp, u);
+}
+
+/* A group of one event touches a handful of vertices, not its whole cycle:
+** the seed, the target piece of a split, and LOCAL_REACH neighbours on each
+** side of them.  Walking the whole cycle for each event made a big convex
+** wavefront quadratic (a 100,000-gon: 10^10 steps).  Groups of several
+** events, or with forced vertices, are degenerate and walk whole cycles. */
+#define LOCAL_REACH 3
+static wk_status collect_local(wk_wavefront *W, bool *closed) {
+    W->stamp++;
+    W->n_comp = 0;
+    W->n_cyc = 1;
+    const wk_wf_vertex *S = &W->v[W->seeds[0]];
+    uint32_t centres[3] = {W->seeds[0], WK_NONE, WK_NONE};
+    if (S->ev_kind == WK_WF_SPLIT) {
+        centres[1] = S->ev_a;
+        centres[2] = S->ev_b;
+    }
+    /* closed: the walk from the seed went round its whole cycle */
+    *closed = false;
+    uint32_t u = W->seeds[0];
+    for (int k = 0; k <= 2 * LOCAL_REACH + 1; k++) {
+        u = W->v[u].next;
+        if (u == W->seeds[0]) {
+            *closed = true;
+            break;
+        }
+    }
+    for (int c = 0; c < 3; c++) {
+        if (centres[c] == WK_NONE || !W->v[centres[c]].alive) continue;
+        uint32_t a = centres[c], b = centres[c];
+        if (push_local(W, a) != WK_OK) return W->R->err.code;
+        for (int k = 0; k < LOCAL_REACH; k++) {
+            a = W->v[a].prev;
+            b = W->v[b].next;
+            if (push_local(W, a) != WK_OK || push_local(W, b) != WK_OK) return W->R->err.code;
+        }
+    }
+    /* the vertices just outside take part as untouched ends of pieces */
+    for (uint32_t i = 0, n = W->n_comp; i < n; i++) {
+        uint32_t c = W->comp[i];
+        if (W->v[W->v[c].next].seen != W->stamp) W->v[W->v[c].next].at = WK_NONE;
+        if (W->v[W->v[c].prev].seen != W->stamp) W->v[W->v[c].prev].at = WK_NONE;
+    }
+    return WK_OK;
+}
+
+static wk_status collect_cycles(wk_wavefront *W) {
+    W->stamp++;
+    W->n_comp = 0;
+    W->n_cyc = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        uint32_t n = pass ? W->n_forced : W->n_seeds;
+        const uint32_t *src = pass ? W->forced : W->seeds;
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t s = src[i];
+            if (W->v[s].seen == W->stamp) continue;
+            uint32_t u = s;
+            do {
+                W->v[u].seen = W->stamp;
+                W->v[u].at = WK_NONE;
+                W->v[u].cyc = W->n_cyc;
+                if (wf_push_u32(W->R, &W->comp, &W->n_comp, &W->cap_comp, u) != WK_OK)
+                    return W->R->err.code;
+                u = W->v[u].next;
+            } while (u != s);
+            W->n_cyc++;
+        }
+    }
+    return WK_OK;
+}
+
+static wk_status add_sub(wk_wavefront *W, uint32_t from, uint32_t to, uint32_t edge) {
+    if (from == to) return WK_OK; /* zero length: this piece collapsed */
+    if (WK_GROW(W->R, W->sub, W->cap_sub, W->n_sub + 1) != WK_OK) return W->R->err.code;
+    W->sub[W->n_sub++] = (wk_wf_sub){from, to, edge, WK_NONE, WK_NONE, 0};
+    return WK_OK;
+}
+
+/* Order sub-pieces by their unordered pair of end points. */
+static int cmp_sub_key(const wk_wavefront *W, uint32_t i, uint32_t j) {
+    const wk_wf_sub *a = &W->sub[i], *b = &W->sub[j];
+    uint32_t a0 = a->from < a->to ? a->from : a->to, a1 = a->from ^ a->to ^ a0;
+    uint32_t b0 = b->from < b->to ? b->from : b->to, b1 = b->from ^ b->to ^ b0;
+    if (a0 != b0) return a0 < b0 ? -1 : 1;
+    if (a1 != b1) return a1 < b1 ? -1 : 1;
+    return 0;
+}
+
+/* Heap sort of sub-piece ids by end points, ids breaking ties (qsort has
+** no context argument and the order must be deterministic). */
+static bool sub_less(const wk_wavefront *W, uint32_t i, uint32_t j) {
+    int c = cmp_sub_key(W, i, j);
+    return c ? c < 0 : i < j;
+}
+static void sift(const wk_wavefront *W, uint32_t *a, uint32_t i, uint32_t n) {
+    for (;;) {
+        uint32_t c = 2 * i + 1;
+        if (c >= n) return;
+        if (c + 1 < n && sub_less(W, a[c], a[c + 1])) c++;
+        if (!sub_less(W, a[i], a[c])) return;
+        uint32_t x = a[i];
+        a[i] = a[c];
+        a[c] = x;
+        i = c;
+    }
+}
+static void sort_by_endpoints(const wk_wavefront *W, uint32_t *a, uint32_t n) {
+    for (uint32_t i = n / 2; i-- > 0;) sift(W, a, i, n);
+    for (uint32_t m = n; m > 1; m--) {
+        uint32_t x = a[0];
+        a[0] = a[m - 1];
+        a[m - 1] = x;
+        sift(W, a, 0, m - 1);
+    }
+}
+
+
+/* ---------------------------------------------------------------- plan */
+
+/* Step 1: a node for every seed's event point and every forced vertex,
+** then the vertices that take part (a local walk for a single event, the
+** touched cycles otherwise). */
+static wk_status plan_nodes(wk_wavefront *W, double t) {
+    wk_run *R = W->R;
+    for (uint32_t i = 0; i < W->n_seeds; i++) {
+        uint32_t k;
+        if (add_cluster(W, W->v[W->seeds[i]].ev_p, &k) != WK_OK) return R->err.code;
+    }
+    for (uint32_t i = 0; i < W->n_forced; i++) {
+        uint32_t k;
+        if (add_cluster(W, wk_wf_pos(&W->v[W->forced[i]], t), &k) != WK_OK) return R->err.code;
+    }
+    W->local_open = false;
+    if (W->n_seeds == 1 && W->n_forced == 0) {
+        bool closed;
+        if (collect_local(W, &closed) != WK_OK) return R->err.code;
+        W->local_open = !closed;
+        return WK_OK;
+    }
+    return collect_cycles(W);
+}
+
+/* Step 2a: every vertex within tolerance of a node arrives there. */
+static void plan_arrivals(wk_wavefront *W, double t) {
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        wk_wf_vertex *u = &W->v[W->comp[i]];
+        /* within the time tolerance a vertex covers |vel| eps_t: a fast
+        ** vertex that close to a node arrives there in the same instant */
+        double speed = fabs(u->vel.x) + fabs(u->vel.y);
+        u->at = find_cluster_within(W, wk_wf_pos(u, t), W->eps_d + speed * W->eps_t);
+    }
+    /* a free vertex whose two neighbours arrive at the same node closes a
+    ** triangle of zero size with it: it arrives too */
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        wk_wf_vertex *u = &W->v[W->comp[i]];
+        uint32_t kp = W->v[u->prev].at;
+        if (u->at == WK_NONE && kp != WK_NONE && kp == W->v[u->next].at && u->prev != u->next)
+            u->at = kp;
+    }
+    for (uint32_t i = 0; i < W->n_seeds; i++) {
+        wk_wf_vertex *u = &W->v[W->seeds[i]];
+        if (u->at == WK_NONE) u->at = find_cluster(W, u->ev_p);
+        if (u->ev_kind == WK_WF_EDGE && W->v[u->next].at == WK_NONE) W->v[u->next].at = u->at;
+    }
+}
+
+/* Step 2b: a node inside a piece cuts it (a pinch). */
+static wk_status plan_pinches(wk_wavefront *W, double t) {
+    wk_run *R = W->R;
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        uint32_t a = W->comp[i];
+        const wk_wf_vertex *A = &W->v[a], *B = &W->v[A->next];
+        /* an end that arrives at a node is taken at the node, so pinches and
+        ** arrivals see the same geometry */
+        wk_point pa = A->at != WK_NONE ? W->cl[A->at].p : wk_wf_pos(A, t);
+        wk_point pb = B->at != WK_NONE ? W->cl[B->at].p : wk_wf_pos(B, t);
+        const wk_offset_line *L = &W->L[A->eout];
+        double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
+        for (uint32_t k = 0; k < W->n_cl; k++) {
+            if (k == A->at || k == B->at) continue;
+            wk_point q = W->cl[k].p;
+            double s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
+            if (s < -W->eps_d || s > len + W->eps_d) continue;
+            double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
+            if (fabs(off) > W->eps_d) continue;
+            /* A node on the line within tolerance of an end of the piece: that
+            ** end arrives at the node (else the node would touch the piece
+            ** without cutting it, and the group would change nothing). */
+            if (s <= W->eps_d) {
+                if (A->at == WK_NONE) W->v[a].at = k;
+                continue;
+            }
+            if (s >= len - W->eps_d) {
+                if (B->at == WK_NONE) W->v[A->next].at = k;
+                continue;
+            }
+            if (WK_GROW(R, W->pin, W->cap_pin, W->n_pin + 1) != WK_OK) return R->err.code;
+            W->pin[W->n_pin++] = (wk_wf_pinch){a, s, k};
+        }
+    }
+    return WK_OK;
+}
+
+/* Step 2c, the progress guarantee: a split seed always cuts its target
+** piece at its node, even when rounding put the node a little more than the
+** tolerance off the piece's line (detection and resolution must agree, or
+** the same event would be found again and again).  Then the pinches are
+** sorted by piece. */
+static wk_status plan_seed_cuts(wk_wavefront *W, double t) {
+    wk_run *R = W->R;
+    for (uint32_t i = 0; i < W->n_seeds; i++) {
+        const wk_wf_vertex *u = &W->v[W->seeds[i]];
+        if (u->ev_kind != WK_WF_SPLIT || u->at == WK_NONE) continue;
+        uint32_t a = u->ev_a, k = u->at;
+        const wk_wf_vertex *A = &W->v[a];
+        if (!A->alive || A->next != u->ev_b || A->seen != W->stamp) continue;
+        const wk_wf_vertex *B = &W->v[A->next];
+        if (k == A->at || k == B->at) continue;
+        bool have = false;
+        for (uint32_t j = 0; j < W->n_pin; j++) have |= W->pin[j].piece == a && W->pin[j].node == k;
+        if (have) continue;
+        const wk_offset_line *L = &W->L[A->eout];
+        wk_point pa = A->at != WK_NONE ? W->cl[A->at].p : wk_wf_pos(A, t);
+        wk_point pb = B->at != WK_NONE ? W->cl[B->at].p : wk_wf_pos(B, t);
+        wk_point q = W->cl[k].p;
+        double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
+        double sq = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
+        if (sq <= W->eps_d) {
+            W->v[a].at = k;
+        } else if (sq >= len - W->eps_d) {
+            W->v[A->next].at = k;
+        } else {
+            if (WK_GROW(R, W->pin, W->cap_pin, W->n_pin + 1) != WK_OK) return R->err.code;
+            W->pin[W->n_pin++] = (wk_wf_pinch){a, sq, k};
+        }
+    }
+    if (W->n_pin > 1) qsort(W->pin, W->n_pin, sizeof *W->pin, cmp_pinch);
+    return WK_OK;
+}
+
+/* Step 3a: the sub-pieces of every piece that touches a node, between
+** points (nodes or untouched vertices); zero-length ones vanish. */
+static wk_status plan_sub_pieces(wk_wavefront *W) {
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        uint32_t a = W->comp[i];
+        const wk_wf_vertex *A = &W->v[a];
+        uint32_t b = A->next;
+        /* pinches are sorted by piece id: binary search this piece's run */
+        uint32_t lo = 0, hi = W->n_pin;
+        while (lo < hi) {
+            uint32_t mid = lo + (hi - lo) / 2;
+            if (W->pin[mid].piece < a) lo = mid + 1;
+            else hi = mid;
+        }
+        uint32_t pi0 = lo, pi1 = pi0;
+        while (pi1 < W->n_pin && W->pin[pi1].piece == a) pi1++;
+        if (A->at == WK_NONE && W->v[b].at == WK_NONE && pi1 == pi0) continue;
+        uint32_t from = A->at != WK_NONE ? (A->at | NODE_BIT) : a;
+        for (uint32_t j = pi0; j < pi1; j++) {
+            uint32_t to = W->pin[j].node | NODE_BIT;
+            if (add_sub(W, from, to, A->eout) != WK_OK) return W->R->err.code;
+            from = to;
+        }
+        uint32_t to = W->v[b].at != WK_NONE ? (W->v[b].at | NODE_BIT) : b;
+        if (add_sub(W, from, to, A->eout) != WK_OK) return W->R->err.code;
+    }
+    return WK_OK;
+}
+
+/* Step 3b, cancellation: opposite sub-pieces between the same two nodes
+** (parallel edges that met) leave an arc. */
+static wk_status plan_cancel(wk_wavefront *W) {
+    wk_run *R = W->R;
+    if (W->n_sub <= 1) return WK_OK;
+    if (WK_GROW(R, W->slot, W->cap_slot, W->n_sub) != WK_OK) return R->err.code;
+    W->n_slot = 0;
+    for (uint32_t i = 0; i < W->n_sub; i++)
+        if (IS_NODE(W->sub[i].from) && IS_NODE(W->sub[i].to)) W->slot[W->n_slot++] = i;
+    sort_by_endpoints(W, W->slot, W->n_slot);
+    for (uint32_t i = 0; i < W->n_slot; i++) {
+        wk_wf_sub *a = &W->sub[W->slot[i]];
+        if (a->dead) continue;
+        for (uint32_t j = i + 1; j < W->n_slot && cmp_sub_key(W, W->slot[i], W->slot[j]) == 0; j++) {
+            wk_wf_sub *b = &W->sub[W->slot[j]];
+            if (!b->dead && b->from == a->to && b->to == a->from) {
+                /* 2: cancelled, leaves an arc; 1: one edge folded onto
+                ** itself within tolerance, which traces nothing */
+                a->dead = b->dead = a->edge == b->edge ? 1 : 2;
+                break;
+            }
+        }
+    }
+    return WK_OK;
+}
+
+/* Step 5a: vertices that meet the group without being at a node yet.  An
+** untouched vertex whose pieces both lead to the same node closes a
+** triangle of no area with it; an untouched vertex lying on a sub-piece
+** between two nodes (where parallel edges met: an end of a collinear step
+** of the other side) meets it too.  Each becomes a node (*again). */
+static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
+    wk_run *R = W->R;
+    for (uint32_t i = 0; i < W->n_sub; i++) {
+        const wk_wf_sub *x = &W->sub[i];
+        if (x->dead || !IS_NODE(x->from) || IS_NODE(x->to)) continue;
+        for (uint32_t j = 0; j < W->n_sub; j++) {
+            const wk_wf_sub *y = &W->sub[j];
+            if (y->dead || y->from != x->to || y->to != x->from) continue;
+            if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, x->to) != WK_OK)
+                return R->err.code;
+            *again = true;
+            break;
+        }
+    }
+    if (*again) return WK_OK;
+    for (uint32_t i = 0; i < W->n_sub; i++) {
+        const wk_wf_sub *x = &W->sub[i];
+        if (x->dead || !IS_NODE(x->from) || !IS_NODE(x->to)) continue;
+        wk_point a = W->cl[NODE_OF(x->from)].p, b = W->cl[NODE_OF(x->to)].p;
+        const wk_offset_line *L = &W->L[x->edge];
+        double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
+        for (uint32_t j = 0; j < W->n_comp; j++) {
+            const wk_wf_vertex *u = &W->v[W->comp[j]];
+            if (u->at != WK_NONE) continue;
+            wk_point q = wk_wf_pos(u, t);
+            double sq = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
+            double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
+            if (sq <= -W->eps_d || sq >= len + W->eps_d || fabs(off) > W->eps_d) continue;
+            if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, W->comp[j]) != WK_OK)
+                return R->err.code;
+            *again = true;
+        }
+    }
+    return WK_OK;
+}
+
+/* Step 4a: each node's incoming and outgoing sub-pieces in its slots
+** (slot[first .. first + count); incoming ones flagged with NODE_BIT). */
+static wk_status plan_slots(wk_wavefront *W) {
+    wk_run *R = W->R;
+    for (uint32_t k = 0; k < W->n_cl; k++) W->cl[k].count = 0;
+    for (uint32_t i = 0; i < W->n_sub; i++) {
+        wk_wf_sub *s = &W->sub[i];
+        if (s->dead) continue;
+        if (IS_NODE(s->from)) W->cl[NODE_OF(s->from)].count++;
+        if (IS_NODE(s->to)) W->cl[NODE_OF(s->to)].count++;
+    }
+    uint32_t total = 0;
+    for (uint32_t k = 0; k < W->n_cl; k++) {
+        W->cl[k].first = total;
+        total += W->cl[k].count;
+        W->cl[k].count = 0;
+    }
+    if (WK_GROW(R, W->slot, W->cap_slot, total + 1) != WK_OK) return R->err.code;
+    for (uint32_t i = 0; i < W->n_sub; i++) {
+        wk_wf_sub *s = &W->sub[i];
+        if (s->dead) continue;
+        if (IS_NODE(s->from)) {
+            wk_wf_cluster *c = &W->cl[NODE_OF(s->from)];
+            W->slot[c->first + c->count++] = i; /* outgoing at from */
+        }
+        if (IS_NODE(s->to)) {
+            wk_wf_cluster *c = &W->cl[NODE_OF(s->to)];
+            W->slot[c->first + c->count++] = i | NODE_BIT; /* incoming at to */
+        }
+    }
+    return WK_OK;
+}
+
+/* Step 5b, overlap: an incoming and an outgoing sub-piece leaving a node in
+** the same direction are antiparallel edges lying on each other.  Their
+** common part vanishes now, so the nearer far end (an untouched vertex
+** lying on the other piece) meets it: it becomes a node (*again). */
+static wk_status plan_force_overlaps(wk_wavefront *W, double t, bool *again) {
+    wk_run *R = W->R;
+    for (uint32_t k = 0; k < W->n_cl; k++) {
+        wk_wf_cluster *c = &W->cl[k];
+        for (uint32_t j = 0; j < c->count; j++) {
+            uint32_t in = W->slot[c->first + j];
+            if (!(in & NODE_BIT)) continue;
+            in &= ~NODE_BIT;
+            double a = angle_of(&W->L[W->sub[in].edge], true);
+            for (uint32_t m = 0; m < c->count; m++) {
+                uint32_t out = W->slot[c->first + m];
+                if (out & NODE_BIT) continue;
+                double d = fabs(a - angle_of(&W->L[W->sub[out].edge], false));
+                if (d > 1e-12 && fabs(d - TWO_PI) > 1e-12) continue;
+                wk_point pin = point_pos(W, W->sub[in].from, t);
+                wk_point pout = point_pos(W, W->sub[out].to, t);
+                uint32_t far = wf_dist2(pin, c->p) < wf_dist2(pout, c->p) ? W->sub[in].from : W->sub[out].to;
+                if (IS_NODE(far)) continue; /* equal pieces were cancelled; spike check below */
+                if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, far) != WK_OK)
+                    return R->err.code;
+                *again = true;
+            }
+        }
+    }
+    return WK_OK;
+}
+
+/* Step 4b, pairing at each node: an incoming sub-piece continues with the
+** first free outgoing one clockwise from it (the wavefront interior lies in
+** that sector); each pair becomes a new wavefront vertex.  Step 5c: a turn
+** of (nearly) 2 pi is a zero-width spike, some vertex lies on one of the two
+** sub-pieces: the nearer far end becomes a node (*again; every spike of the
+** round is collected before planning again). */
+static wk_status plan_pairs(wk_wavefront *W, double t, bool *again) {
+    wk_run *R = W->R;
+    for (uint32_t k = 0; k < W->n_cl; k++) {
+        wk_wf_cluster *c = &W->cl[k];
+        uint32_t nin = 0, nout = 0;
+        for (uint32_t j = 0; j < c->count; j++) (W->slot[c->first + j] & NODE_BIT) ? nin++ : nout++;
+        if (nin != nout)
+            return WK_FAIL(R, WK_EALGO, W->P->name, 0,
+                           "wavefront: inconsistent wavefront at (%.17g, %.17g), t = %.17g: %u pieces "
+                           "arrive, %u leave",
+                           c->p.x, c->p.y, t, nin, nout);
+        for (uint32_t j = 0; j < c->count; j++) {
+            uint32_t in = W->slot[c->first + j];
+            if (!(in & NODE_BIT)) continue;
+            in &= ~NODE_BIT;
+            double a = angle_of(&W->L[W->sub[in].edge], true);
+            uint32_t best = WK_NONE;
+            double bturn = INFINITY;
+            for (uint32_t m = 0; m < c->count; m++) {
+                uint32_t out = W->slot[c->first + m];
+                if (out & NODE_BIT) continue;
+                if (W->sub[out].pair_out != WK_NONE) continue;
+                double turn = cw_turn(a, angle_of(&W->L[W->sub[out].edge], false));
+                if (turn < bturn) {
+                    bturn = turn;
+                    best = out;
+                }
+            }
+            if (best == WK_NONE)
+                return WK_FAIL(R, WK_EALGO, W->P->name, 0,
+                               "wavefront: cannot pair wavefront pieces at (%.17g, %.17g), t = %.17g",
+                               c->p.x, c->p.y, t);
+            if (bturn > TWO_PI - 1e-9) {
+                wk_wf_sub *si = &W->sub[in], *so = &W->sub[best];
+                wk_point pin = point_pos(W, si->from, t), pout = point_pos(W, so->to, t);
+                uint32_t far = wf_dist2(pin, c->p) < wf_dist2(pout, c->p) ? si->from : so->to;
+                if (IS_NODE(far))
+                    return WK_FAIL(R, WK_EALGO, W->P->name, 0,
+                                   "wavefront: unresolved spike at (%.17g, %.17g), t = %.17g", c->p.x,
+                                   c->p.y, t);
+                if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, far) != WK_OK)
+                    return R->err.code;
+                *again = true;
+                W->sub[in].pair_in = W->sub[best].pair_out = W->n_pair;
+                continue;
+            }
+            if (WK_GROW(R, W->pair, W->cap_pair, W->n_pair + 1) != WK_OK) return R->err.code;
+            W->sub[in].pair_in = W->n_pair;
+            W->sub[best].pair_out = W->n_pair;
+            W->pair[W->n_pair++] = (wk_wf_pair){in, best, k, WK_NONE};
+        }
+    }
+    return WK_OK;
+}
+
+/* Plan the group (the steps of the note at the top).  Returns WK_OK with
+** *again set when a vertex was forced to become a node: plan again. */
+static wk_status plan(wk_wavefront *W, double t, bool *again) {
+    wk_run *R = W->R;
+    *again = false;
+    W->n_cl = W->n_pin = W->n_sub = W->n_pair = 0;
+    if (plan_nodes(W, t) != WK_OK) return R->err.code;
+    plan_arrivals(W, t);
+    if (plan_pinches(W, t) != WK_OK || plan_seed_cuts(W, t) != WK_OK) return R->err.code;
+    if (plan_sub_pieces(W) != WK_OK || plan_cancel(W) != WK_OK) return R->err.code;
+    if (plan_force_touching(W, t, again) != WK_OK) return R->err.code;
+    if (*again) return WK_OK;
+    if (plan_slots(W) != WK_OK || plan_force_overlaps(W, t, again) != WK_OK) return R->err.code;
+    if (*again) return WK_OK;
+    return plan_pairs(W, t, again);
+}
+
+/* -------------------------------------------------------------- commit */
+
+static uint32_t sk_node(wk_wavefront *W, uint32_t k, double t) {
+    wk_wf_cluster *c = &W->cl[k];
+    if (c->sk == WK_NONE) {
+        uint32_t id;
+        if (wk_skeleton_add_node(W->R, W->S, c->p.x + W->origin.x, c->p.y + W->origin.y, t, &id) !=
+            WK_OK)
+            return WK_NONE;
+        c->sk = id;
+    }
+    return c->sk;
+}
+
+/* Parallel edges that share a vertex lie on one line: the vertex between
+** them has WK_VEL_STRAIGHT (equal weights) or WK_VEL_COLLINEAR kinetics. */
+static bool on_one_line(const wk_wf_vertex *u) {
+    return u->alive && (u->vkind == WK_VEL_COLLINEAR || u->vkind == WK_VEL_STRAIGHT);
+}
+
+/* The node where run vertex i (W->run[i]) is at time t, created once: its
+** own start node if it was born now, else a new node at its position. */
+static wk_status run_node(wk_wavefront *W, uint32_t i, double t, uint32_t *node) {
+    if (W->run_node[i] == WK_NONE) {
+        wk_wf_vertex *U = &W->v[W->run[i]];
+        if (U->t0 == t) {
+            W->run_node[i] = U->node;
+        } else {
+            wk_point q = wk_wf_pos(U, t);
+            if (wk_skeleton_add_node(W->R, W->S, q.x + W->origin.x, q.y + W->origin.y, t,
+                                     &W->run_node[i]) != WK_OK)
+                return W->R->err.code;
+        }
+    }
+    *node = W->run_node[i];
+    return WK_OK;
+}
+
+/* The collinear rule (000, section 1).  Vertex vi sits between parallel
+** edges of different weight, which no moving vertex can join.  Take the
+** maximal run of consecutive pieces on that line (a run, not one pair: three
+** parallel walls can meet at once); the winning weight (lowest by default,
+** highest with --collinear higher) survives, every other piece of the run is
+** swept at once, leaving an arc along it at time t between its face and the
+** surviving piece that extends over it (the one before it, else the one
+** after it).  Vertices of the run that touch a swept piece end here; new
+** vertices join the surviving pieces. */
+static wk_status slide(wk_wavefront *W, uint32_t vi, double t) {
+    wk_run *R = W->R;
+    if (!on_one_line(&W->v[vi])) return WK_OK;
+    /* run[0]: the vertex before the run's first piece; run[m]: after its
+    ** last; run[1..m-1] lie between pieces of the run */
+    uint32_t u0 = vi, um = vi, guard = 0;
+    while (on_one_line(&W->v[u0])) {
+        u0 = W->v[u0].prev;
+        if (++guard > W->nv) goto cyclic;
+    }
+    while (on_one_line(&W->v[um])) {
+        um = W->v[um].next;
+        if (++guard > W->nv) goto cyclic;
+    }
+    W->n_run = 0;
+    for (uint32_t u = u0;; u = W->v[u].next) {
+        if (WK_GROW(R, W->run, W->cap_run, W->n_run + 1) != WK_OK ||
+            WK_GROW(R, W->run_node, W->cap_run_node, W->n_run + 1) != WK_OK)
+            return R->err.code;
+        W->run[W->n_run] = u;
+        W->run_node[W->n_run++] = WK_NONE;
+        if (u == um) break;
+    }
+    uint32_t m = W->n_run - 1;
+    /* piece i (1..m) runs run[i-1] -> run[i] on edge piece_edge(i) */
+#define PIECE_EDGE(i) (W->v[W->run[(i) - 1]].eout)
+    bool lower = R->opt.collinear == WK_COLLINEAR_LOWER;
+    double best = W->L[PIECE_EDGE(1)].w;
+    for (uint32_t i = 2; i <= m; i++) {
+        double w = W->L[PIECE_EDGE(i)].w;
+        if (lower ? w < best : w > best) best = w;
+    }
+    uint32_t first_winner = WK_NONE;
+    for (uint32_t i = 1; i <= m && first_winner == WK_NONE; i++)
+        if (W->L[PIECE_EDGE(i)].w == best) first_winner = PIECE_EDGE(i);
+    /* arcs along the losing pieces */
+    uint32_t ext = first_winner;
+    bool changed = false;
+    for (uint32_t i = 1; i <= m; i++) {
+        uint32_t e = PIECE_EDGE(i);
+        if (W->L[e].w == best) {
+            ext = e;
+            continue;
+        }
+        uint32_t a, b;
+        if (run_node(W, i - 1, t, &a) != WK_OK || run_node(W, i, t, &b) != WK_OK) return R->err.code;
+        if (wf_add_arc(W, a, b, ext, e) != WK_OK) return R->err.code;
+        wk_event ev = {t, 0, 0, e, ext, WK_NONE};
+        wk_notify_event(R, WK_COUNTER_collinear_resolutions, &ev);
+        changed = true;
+    }
+    if (!changed) return WK_OK;
+    /* rebuild: cur is the last vertex of the new wavefront, cur_out the
+    ** edge leaving it */
+    uint32_t cur = W->v[u0].prev, cur_out = W->v[u0].ein;
+    for (uint32_t i = 0; i <= m; i++) {
+        uint32_t u = W->run[i];
+        wk_wf_vertex *U = &W->v[u];
+        uint32_t ein = i == 0 ? U->ein : PIECE_EDGE(i);
+        uint32_t eout = i == m ? U->eout : PIECE_EDGE(i + 1);
+        bool lost_before = i > 0 && W->L[ein].w != best;
+        bool lost_after = i < m && W->L[eout].w != best;
+        if (!lost_before && !lost_after) {
+            wf_link(W, cur, u); /* untouched */
+            cur = u;
+            cur_out = U->eout;
+            continue;
+        }
+        uint32_t nd;
+        if (run_node(W, i, t, &nd) != WK_OK) return R->err.code;
+        wk_point q = wk_wf_pos(U, t);
+        uint32_t p_next = U->next;
+        if (wf_terminate(W, u, nd) != WK_OK) return R->err.code;
+        /* the edge that leaves this point in the new wavefront */
+        uint32_t leave = i == m ? eout : (lost_after ? cur_out : eout);
+        if (i == 0) leave = first_winner;
+        if (lost_after && i > 0 && i < m && W->L[ein].w == best) leave = ein;
+        if (i < m && !lost_after) leave = eout;
+        if (leave != cur_out) {
+            uint32_t g = wf_new_vertex(W, cur_out, leave, q, t, nd);
+            if (g == WK_NONE || wf_mark_fresh(W, g) != WK_OK) return R->err.code;
+            wf_link(W, cur, g);
+            cur = g;
+            cur_out = leave;
+        }
+        if (i == m) wf_link(W, cur, p_next);
+    }
+#undef PIECE_EDGE
+    return WK_OK;
+cyclic:
+    return WK_FAIL(R, WK_EALGO, W->P->name, 0,
+                   "wavefront: a whole wavefront cycle lies on one line at t = %.17g", t);
+}
+
+/* Follow pass-through pairs (same edge on both sides: no vertex) to the
+** vertex at the head of sub-piece s. */
+static uint32_t head_vertex(wk_wavefront *W, uint32_t s) {
+    for (uint32_t guard = 0; guard <= W->n_sub; guard++) {
+        wk_wf_sub *x = &W->sub[s];
+        if (!IS_NODE(x->to)) return x->to;
+        wk_wf_pair *p = &W->pair[x->pair_in];
+        if (p->vertex != WK_NONE) return p->vertex;
+        s = p->out;
+    }
+    return WK_NONE;
+}
+
+static wk_status commit(wk_wavefront *W, double t) {
+    wk_run *R = W->R;
+    /* skeleton nodes and arcs of arriving vertices */
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        uint32_t u = W->comp[i];
+        if (W->v[u].at == WK_NONE) continue;
+        uint32_t sk = sk_node(W, W->v[u].at, t);
+        if (sk == WK_NONE || wf_terminate(W, u, sk) != WK_OK) return R->err.code;
+    }
+    /* cancelled pairs leave arcs: face of x->y on its right */
+    for (uint32_t i = 0; i < W->n_sub; i++) {
+        wk_wf_sub *a = &W->sub[i];
+        if (a->dead != 2) continue;
+        a->dead = 1;
+        for (uint32_t j = 0; j < W->n_sub; j++) {
+            wk_wf_sub *b = &W->sub[j];
+            if (b->dead == 2 && b->from == a->to && b->to == a->from) {
+                b->dead = 1;
+                uint32_t x = sk_node(W, NODE_OF(a->from), t), y = sk_node(W, NODE_OF(a->to), t);
+                if (x == WK_NONE || y == WK_NONE || wf_add_arc(W, x, y, b->edge, a->edge) != WK_OK)
+                    return R->err.code;
+                break;
+            }
+        }
+    }
+    /* new vertices */
+    for (uint32_t i = 0; i < W->n_pair; i++) {
+        wk_wf_pair *p = &W->pair[i];
+        uint32_t ein = W->sub[p->in].edge, eout = W->sub[p->out].edge;
+        if (ein == eout) continue; /* the piece just passes through */
+        uint32_t sk = sk_node(W, p->node, t);
+        if (sk == WK_NONE) return R->err.code;
+        uint32_t v = wf_new_vertex(W, ein, eout, W->cl[p->node].p, t, sk);
+        if (v == WK_NONE || wf_mark_fresh(W, v) != WK_OK) return R->err.code;
+        p = &W->pair[i];
+        p->vertex = v;
+    }
+    /* links: every live sub-piece joins the vertex at its tail to the one at
+    ** its head; pass-through pairs are followed */
+    for (uint32_t i = 0; i < W->n_sub; i++) {
+        wk_wf_sub *s = &W->sub[i];
+        if (s->dead) continue;
+        uint32_t tail;
+        if (IS_NODE(s->from)) {
+            tail = W->pair[s->pair_out].vertex;
+            if (tail == WK_NONE) continue; /* inside a pass-through chain */
+        } else {
+            tail = s->from;
+        }
+        uint32_t head = head_vertex(W, i);
+        if (head == WK_NONE)
+            return WK_FAIL(R, WK_EALGO, W->P->name, 0, "wavefront: broken wavefront cycle at t = %.17g", t);
+        wf_link(W, tail, head);
+        /* tail's next changed: its cycle is walked again by refresh */
+        if (wf_mark_fresh(W, tail) != WK_OK) return R->err.code;
+    }
+    wk_event e = {t, 0, 0, WK_NONE, WK_NONE, WK_NONE};
+    wk_notify_event(R, WK_COUNTER_simultaneous_event_groups, &e);
+    return WK_OK;
+}
+
+/* Count what happened in this group for the observer (counts only). */
+static wk_status count_group(wk_wavefront *W, double t) {
+    wk_run *R = W->R;
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        const wk_wf_vertex *u = &W->v[W->comp[i]];
+        if (u->at == WK_NONE) continue;
+        W->cl[u->at].arrive++;
+        W->cl[u->at].reflex += u->reflex;
+    }
+    for (uint32_t i = 0; i < W->n_pin; i++) W->cl[W->pin[i].node].pinches++;
+    for (uint32_t i = 0; i < W->n_pair; i++)
+        if (W->sub[W->pair[i].in].edge != W->sub[W->pair[i].out].edge) W->cl[W->pair[i].node].pairs++;
+    for (uint32_t k = 0; k < W->n_cl; k++) {
+        const wk_wf_cluster *c = &W->cl[k];
+        wk_event e = {t, c->p.x, c->p.y, k, c->arrive, c->reflex};
+        if (c->reflex >= 2) wk_notify_event(R, WK_COUNTER_multi_split_events, &e);
+        else if (c->reflex == 1 && c->pinches) wk_notify_event(R, WK_COUNTER_split_events, &e);
+        else if (c->arrive >= 2) wk_notify_event(R, WK_COUNTER_edge_events, &e);
+    }
+    /* a touched cycle vanished if every vertex of it arrived at a node and
+    ** none of its nodes starts a new vertex (flag 1: alive) */
+    if (WK_GROW(R, W->cycflag, W->cap_cycflag, W->n_cyc + 1) != WK_OK) return R->err.code;
+    memset(W->cycflag, 0, W->n_cyc);
+    if (W->local_open) W->cycflag[0] = 1; /* only part of its cycle was looked at */
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        const wk_wf_vertex *u = &W->v[W->comp[i]];
+        if (u->at == WK_NONE || W->cl[u->at].pairs) W->cycflag[u->cyc] = 1;
+    }
+    for (uint32_t c = 0; c < W->n_cyc; c++) {
+        if (W->cycflag[c]) continue;
+        wk_event e = {t, 0, 0, c, WK_NONE, WK_NONE};
+        wk_notify_event(R, WK_COUNTER_vanishing_components, &e);
+    }
+    /* an edge event (no piece cut) whose one new vertex is reflex: 000's
+    ** reflex-preserving edge event */
+    for (uint32_t i = 0; i < W->n_pair; i++) {
+        const wk_wf_pair *p = &W->pair[i];
+        const wk_wf_cluster *c = &W->cl[p->node];
+        if (p->vertex == WK_NONE || c->pinches || c->arrive < 2 || c->pairs != 1) continue;
+        if (!W->v[p->vertex].reflex) continue;
+        wk_event e = {t, c->p.x, c->p.y, p->node, c->arrive, c->reflex};
+        wk_notify_event(R, WK_COUNTER_reflex_preserving_edge_events, &e);
+    }
+    return WK_OK;
+}
+
+static wk_status check_cycles_sane(wk_wavefront *W) {
+    for (uint32_t i = 0; i < W->n_fresh; i++) {
+        uint32_t f = W->fresh[i];
+        if (!W->v[f].alive) continue;
+        /* a few steps around each fresh vertex: enough to see a cycle of
+        ** fewer than 3 vertices or a broken link next to the change */
+        uint32_t len = 0, u = f;
+        do {
+            if (!W->v[u].alive || W->v[W->v[u].next].prev != u)
+                return WK_FAIL(W->R, WK_EALGO, W->P->name, 0,
+                               "wavefront: broken wavefront cycle after t = %.17g", W->t_now);
+            u = W->v[u].next;
+            ++len;
+        } while (u != f && len < 3);
+        if (len < 3 && u == f)
+            return WK_FAIL(W->R, WK_EALGO, W->P->name, 0,
+                           "wavefront: wavefront cycle of %u vertices after t = %.17g", len, W->t_now);
+    }
+    return WK_OK;
+}
+
+/* A cycle that the group left with zero area: every vertex on one line
+** (within a tolerance) and its pieces covering the line from both sides
+** exactly once, as two walls met flat (the group resolution, working with
+** nodes eps_d apart, can leave one with a zero-length piece and an
+** antiparallel vertex: walls at equal levels far from the origin meeting
+** 1e-10 apart in time).  The whole cycle vanishes now: each vertex ends at
+** the node of its place, and each stretch of the line gets one arc between
+** the faces of the piece covering it from either side (the piece's face lies
+** on its right).  *done is false, and nothing is changed, if the cycle is not
+** of that kind. */
+static wk_status collapse_flat_cycle(wk_wavefront *W, uint32_t f, double t, bool *done) {
+    wk_run *R = W->R;
+    *done = false;
+    const wk_offset_line *L = &W->L[W->v[f].ein];
+    wk_point o = wk_wf_pos(&W->v[f], t);
+    double tol = 1e3 * W->eps_d;
+    /* the cycle's places along L's direction (s) and its pieces */
+    uint32_t len = 0, u = f;
+    do {
+        wk_point q = wk_wf_pos(&W->v[u], t);
+        double off = (q.x - o.x) * L->nx + (q.y - o.y) * L->ny;
+        if (fabs(off) > tol || ++len > 64) return WK_OK; /* not flat, or too big to care */
+        u = W->v[u].next;
+    } while (u != f);
+    double sv[64];
+    uint32_t cyc[64];
+    u = f;
+    for (uint32_t i = 0; i < len; i++, u = W->v[u].next) {
+        wk_point q = wk_wf_pos(&W->v[u], t);
+        cyc[i] = u;
+        sv[i] = (q.x - o.x) * L->ux + (q.y - o.y) * L->uy;
+    }
+    /* distinct breakpoints (within tol), sorted */
+    double bp[64];
+    uint32_t nb = 0;
+    for (uint32_t i = 0; i < len; i++) {
+        bool have = false;
+        for (uint32_t j = 0; j < nb; j++) have |= fabs(bp[j] - sv[i]) <= tol;
+        if (!have) bp[nb++] = sv[i];
+    }
+    for (uint32_t i = 1; i < nb; i++)
+        for (uint32_t j = i; j > 0 && bp[j - 1] > bp[j]; j--) {
+            double x = bp[j];
+            bp[j] = bp[j - 1];
+            bp[j - 1] = x;
+        }
+    if (nb < 2) return WK_OK;
+    /* every elementary stretch covered once forwards and once backwards */
+    uint32_t fwd[64], bwd[64];
+    for (uint32_t k = 0; k + 1 < nb; k++) {
+        uint32_t nf = 0, nbk = 0;
+        double mid = 0.5 * (bp[k] + bp[k + 1]);
+        for (uint32_t i = 0; i < len; i++) {
+            double a = sv[i], b = sv[(i + 1) % len];
+            if (mid > fmin(a, b) && mid < fmax(a, b)) {
+                if (b > a) nf++, fwd[k] = W->v[cyc[i]].eout;
+                else nbk++, bwd[k] = W->v[cyc[i]].eout;
+            }
+        }
+        if (nf != 1 || nbk != 1) return WK_OK;
+    }
+    /* nodes at the breakpoints, vertices end there, arcs along the line */
+    uint32_t node[64];
+    for (uint32_t k = 0; k < nb; k++) {
+        wk_point q = {o.x + bp[k] * L->ux, o.y + bp[k] * L->uy};
+        if (wk_skeleton_add_node(R, W->S, q.x + W->origin.x, q.y + W->origin.y, t, &node[k]) != WK_OK)
+            return R->err.code;
+    }
+    for (uint32_t i = 0; i < len; i++) {
+        uint32_t k = 0;
+        while (k + 1 < nb && fabs(bp[k] - sv[i]) > tol) k++;
+        if (wf_terminate(W, cyc[i], node[k]) != WK_OK) return R->err.code;
+    }
+    for (uint32_t k = 0; k + 1 < nb; k++)
+        /* going forwards, the backward piece's face is on the left */
+        if (wf_add_arc(W, node[k], node[k + 1], bwd[k], fwd[k]) != WK_OK) return R->err.code;
+    wk_event e = {t, o.x, o.y, f, WK_NONE, WK_NONE};
+    wk_notify_event(R, WK_COUNTER_vanishing_components, &e);
+    *done = true;
+    return WK_OK;
+}
+
+wk_status wf_collinear_rule(wk_wavefront *W, uint32_t v, double t) { return slide(W, v, t); }
+
+wk_status wf_resolve_group(wk_wavefront *W, double t) {
+    wk_run *R = W->R;
+    W->n_forced = 0;
+    W->n_fresh = 0;
+    W->n_dead = 0;
+    for (int round = 0;; round++) {
+        bool again;
+        if (plan(W, t, &again) != WK_OK) return R->err.code;
+        if (!again) break;
+        if (round > 64 + (int)W->n_comp)
+            return WK_FAIL(R, WK_EALGO, W->P->name, 0, "wavefront: too many spikes at t = %.17g", t);
+    }
+    if (commit(W, t) != WK_OK || count_group(W, t) != WK_OK) return R->err.code;
+    /* collinear rule for fresh vertices between parallel edges */
+    for (uint32_t i = 0; i < W->n_fresh; i++) {
+        uint32_t f = W->fresh[i];
+        if (W->v[f].alive && W->v[f].vkind == WK_VEL_COLLINEAR && slide(W, f, t) != WK_OK)
+            return R->err.code;
+        if (W->v[f].alive && W->v[f].vkind == WK_VEL_ANTIPARALLEL) {
+            bool done;
+            if (collapse_flat_cycle(W, f, t, &done) != WK_OK) return R->err.code;
+            if (done) continue;
+        }
+        if (W->v[f].alive && W->v[f].vkind == WK_VEL_ANTIPARALLEL)
+            return WK_FAIL(R, WK_EALGO, W->P->name, 0,
+                           "wavefront: antiparallel wavefront vertex at t = %.17g", t);
+    }
+    return check_cycles_sane(W);
+}

@@ -1,0 +1,125 @@
+/*
+** wavefront_internal.h: the wavefront's own state, shared by wavefront.c
+** (model, candidates, simulation, the finder interface) and
+** wavefront_group.c (resolution of a group of simultaneous events).  Not
+** for variants: they see the wavefront through wavefront.h only.
+**
+** Invariants between events: every alive vertex is in one cycle (prev/next
+** agree); the piece a -> a.next of alive a lies on the offset line of
+** v[a].eout; a vertex never changes after creation (events kill vertices and
+** create new ones), so "piece (a, b) still exists" is "a alive and
+** a.next == b"; every alive vertex with a finite candidate is queued under
+** its id with that candidate's time.
+*/
+#ifndef WK_WAVEFRONT_INTERNAL_H
+#define WK_WAVEFRONT_INTERNAL_H
+#include "wavefront.h"
+
+#define TWO_PI 6.283185307179586476925286766559
+
+/* candidate event kinds; the order breaks ties between simultaneous ones */
+enum { WK_WF_NONE = 0, WK_WF_EDGE = 1, WK_WF_SPLIT = 2 };
+
+typedef struct wk_wf_vertex {
+    wk_point p0, vel;  /* position at t0 and velocity (distance per time) */
+    double t0;         /* creation time */
+    uint32_t prev, next;
+    uint32_t ein, eout;/* input edges before / after (stored numbering) */
+    uint32_t node;     /* skeleton node where it started */
+    uint8_t alive, reflex, vkind;
+    uint8_t fresh;     /* created in the current group, candidate not yet computed */
+    uint32_t cand_next;/* next when the candidate was computed */
+    uint8_t ev_kind;   /* candidate event */
+    double ev_t;
+    wk_point ev_p;
+    uint32_t ev_a, ev_b; /* edge event: ev_b = next; split: target piece a->b */
+    uint32_t at;       /* group scratch: node index or WK_NONE */
+    uint32_t seen;     /* group scratch: stamp of the last cycle walk */
+    uint32_t cyc;      /* group scratch: index of its cycle among the touched ones */
+} wk_wf_vertex;
+
+/* A node of the group being resolved (event points within eps_d). */
+typedef struct wk_wf_cluster {
+    wk_point p;
+    uint32_t sk;       /* skeleton node id, WK_NONE until committed */
+    uint32_t first, count; /* its sub-pieces' slots in the pairing arrays */
+    uint32_t arrive, reflex, pinches, pairs; /* for the counters */
+} wk_wf_cluster;
+
+/* A node cutting piece `piece` at distance s from its start. */
+typedef struct wk_wf_pinch { uint32_t piece; double s; uint32_t node; } wk_wf_pinch;
+
+/* A directed piece of the wavefront between two points of the group. */
+typedef struct wk_wf_sub {
+    uint32_t from, to;   /* point: node index | NODE_BIT, or a vertex id */
+    uint32_t edge;       /* input edge whose offset line carries it */
+    uint32_t pair_in;    /* index of the pair using it as incoming */
+    uint32_t pair_out;   /* ... as outgoing */
+    uint8_t dead;        /* 1: gone (collapsed or folded), 2: cancelled, leaves an arc */
+} wk_wf_sub;
+
+/* An incoming and an outgoing sub-piece joined at a node: a new vertex. */
+typedef struct wk_wf_pair { uint32_t in, out, node, vertex; } wk_wf_pair;
+
+#define NODE_BIT 0x80000000u
+#define IS_NODE(p) (((p) & NODE_BIT) != 0)
+#define NODE_OF(p) ((p) & ~NODE_BIT)
+
+struct wk_wavefront {
+    wk_run *R;
+    const wk_polygon *P;
+    wk_skeleton *S;
+    wk_offset_line *L;
+    wk_wf_vertex *v;
+    uint32_t nv, cap_v;
+    wk_event_queue Q;
+    double eps_d, eps_t, t_now;
+    wk_point origin;   /* all positions are relative to it (bounding-box centre) */
+    uint32_t stamp;
+    /* group scratch, kept between groups */
+    uint32_t *seeds; uint32_t n_seeds, cap_seeds;
+    uint32_t *forced; uint32_t n_forced, cap_forced;
+    uint32_t *comp; uint32_t n_comp, cap_comp;
+    wk_wf_cluster *cl; uint32_t n_cl, cap_cl;
+    wk_wf_pinch *pin; uint32_t n_pin, cap_pin;
+    wk_wf_sub *sub; uint32_t n_sub, cap_sub;
+    wk_wf_pair *pair; uint32_t n_pair, cap_pair;
+    uint32_t *slot; uint32_t n_slot, cap_slot;
+    uint32_t *fresh; uint32_t n_fresh, cap_fresh;
+    uint32_t *dead; uint32_t n_dead, cap_dead; /* vertices ended in this group */
+    bool local_open;   /* this group looked at part of one cycle only */
+    uint8_t *cycflag; uint32_t n_cyc, cap_cycflag;
+    uint32_t *run, *run_node; uint32_t n_run, cap_run, cap_run_node; /* collinear runs */
+    const wk_split_finder *finder; /* how split events are found */
+    void *finder_ud;
+};
+
+/* Position of vertex V at time t (relative to W->origin). */
+static inline wk_point wk_wf_pos(const wk_wf_vertex *V, double t) {
+    double dt = t - V->t0;
+    return (wk_point){V->p0.x + V->vel.x * dt, V->p0.y + V->vel.y * dt};
+}
+
+static inline double wf_dist2(wk_point a, wk_point b) {
+    double dx = a.x - b.x, dy = a.y - b.y;
+    return dx * dx + dy * dy;
+}
+
+/* wavefront.c: vertices, arcs and the lists a group fills. */
+uint32_t wf_new_vertex(wk_wavefront *W, uint32_t ein, uint32_t eout, wk_point p, double t,
+                       uint32_t node); /* WK_NONE on failure */
+wk_status wf_add_arc(wk_wavefront *W, uint32_t a, uint32_t b, uint32_t left, uint32_t right);
+/* Kill v at skeleton node sk: its arc runs from where it started to sk. */
+wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk);
+void wf_link(wk_wavefront *W, uint32_t a, uint32_t b);
+wk_status wf_mark_fresh(wk_wavefront *W, uint32_t v);
+wk_status wf_push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint32_t x);
+
+/* wavefront_group.c: resolve the group of events seeded by W->seeds at
+** time t (W->fresh and W->dead list what it created and ended). */
+wk_status wf_resolve_group(wk_wavefront *W, double t);
+/* The collinear rule for vertex v at time t (no-op unless v sits between
+** parallel edges). */
+wk_status wf_collinear_rule(wk_wavefront *W, uint32_t v, double t);
+
+#endif
