@@ -15,7 +15,7 @@ bench: $(BENCH_DEPS)
 	@mkdir -p results/latest/plots
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/default.spec $(BENCH_FLAGS) --out results/latest/bench.csv
 	$(PY) scripts/fit.py results/latest/bench.csv --json results/latest/fit.json > results/latest/fit.txt && cat results/latest/fit.txt
-	$(PY) scripts/plot.py results/latest/bench.csv results/latest/plots
+	$(PY) scripts/plot.py results/latest/bench.csv results/latest/plots --fit results/latest/fit.json
 	$(PY) scripts/report.py results/latest/bench.csv results/latest/plots results/latest/REPORT.md --fit results/latest/fit.txt
 
 curves: $(BENCH_DEPS)
@@ -23,7 +23,7 @@ curves: $(BENCH_DEPS)
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves_k.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
 	$(PY) scripts/fit.py results/curves/curves.csv --json results/curves/fit.json > results/curves/fit.txt && cat results/curves/fit.txt
-	$(PY) scripts/plot.py results/curves/curves.csv results/curves/plots
+	$(PY) scripts/plot.py results/curves/curves.csv results/curves/plots --fit results/curves/fit.json
 	$(PY) scripts/report.py results/curves/curves.csv results/curves/plots results/curves/REPORT.md --fit results/curves/fit.txt
 
 regress: $(BENCH)

@@ -18,26 +18,20 @@ import os
 import subprocess
 import sys
 
-KEY_COLS = 8  # variant family n r_req k weights seed repeat
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from results import config_text, read_raw  # noqa: E402
 
 
 def read(path):
-    comments, header, rows = [], None, []
-    with open(path, newline="") as f:
-        data = [line for line in f]
-    body = []
-    for line in data:
-        if line.startswith("#"):
-            comments.append(line)
-        elif line.strip():
-            body.append(line)
-    reader = csv.reader(body)
-    for fields in reader:
-        if header is None:
-            header = fields
-        elif len(fields) == len(header):
-            rows.append(fields)
-    return comments, header, rows
+    """(comment lines, header, rows): rows as raw cells, so they are written
+    back byte for byte; a row with the wrong number of cells (cut off by a
+    killed shard) is dropped, its configuration then shows as missing."""
+    comments, header, rows = read_raw(path)
+    return comments, header or None, [r for r in rows if len(r) == len(header)]
+
+
+def key_of(header, cells):
+    return config_text(dict(zip(header, cells)))
 
 
 def jsonl_path(path):
@@ -60,7 +54,7 @@ def main():
         elif header != header0:
             sys.exit("merge_shards: %s: columns differ from %s" % (path, args.shards[0]))
         for r in shard_rows:
-            key = ",".join(r[:KEY_COLS])
+            key = key_of(header, r)
             status = r[header.index("status")]
             if key in seen:
                 if seen[key] != status:
@@ -77,7 +71,7 @@ def main():
                  for line in out.splitlines() if line.strip()}
         missing = [k for k in order if k not in seen]
         extra = [k for k in seen if k not in order]
-        rows.sort(key=lambda r: order.get(",".join(r[:KEY_COLS]), 1 << 62))
+        rows.sort(key=lambda r: order.get(key_of(header0, r), 1 << 62))
         if missing:
             print("merge_shards: %d configurations missing, e.g. %s" % (len(missing), missing[0]))
         if extra:
@@ -98,14 +92,12 @@ def main():
                     d = json.loads(line)
                 except ValueError:
                     continue
-                k = d["k"] if d["k"] is not None else ""
-                key = ",".join(str(x) for x in (d["variant"], d["family"], d["n"], d["r_req"], k,
-                                                d["weights"], d["seed"], d["repeat"]))
-                jrows.setdefault(key, line if line.endswith("\n") else line + "\n")
+                # JSON's null k is the CSV's empty cell, as config_text writes it.
+                jrows.setdefault(config_text(d), line if line.endswith("\n") else line + "\n")
     if jrows:
         with open(jsonl_path(args.out), "w") as f:
             for r in rows:
-                line = jrows.get(",".join(r[:KEY_COLS]))
+                line = jrows.get(key_of(header0, r))
                 if line:
                     f.write(line)
     print("merge_shards: %d rows from %d shards -> %s" % (len(rows), len(args.shards), args.out))

@@ -11,14 +11,17 @@
     events_vs_bounds switch events against n r, start events against r^2,
                      all events against n.
 A figure whose data are absent (e.g. no variant with k yet) is skipped, and
-said so.  Only rows with status ok are plotted.
+said so.  Only rows with status ok are plotted; an empty counter cell (the
+row's variant has no such counter) is no point, not a zero.  The model is
+not refitted here: --fit reads fit.py's --json output, so the dashed curves
+are exactly the fits that fit.txt and the report print.
 
-usage: plot.py RESULTS.csv OUTDIR
+usage: plot.py RESULTS.csv OUTDIR [--fit FIT.json]
 """
-import math
+import argparse
+import json
 import os
 import sys
-from collections import defaultdict
 
 import matplotlib
 
@@ -27,7 +30,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import fit  # noqa: E402
+import fit  # noqa: E402  (the model's formula, fit.predict)
+from results import group_by, k_order, k_value, load_csv, loglog_slope  # noqa: E402
 
 MARKERS = {"naive": "o", "cgal": "s", "arrangement": "^"}
 STYLES = {"cgal": ":"}
@@ -42,20 +46,9 @@ def save(fig, outdir, name, written):
 
 
 def median_by(rows, keyf, valf):
-    groups = defaultdict(list)
-    for r in rows:
-        v = valf(r)
-        if v is not None:
-            groups[keyf(r)].append(v)
-    return {k: float(np.median(v)) for k, v in groups.items()}
-
-
-def slope(xs, ys):
-    xs, ys = np.asarray(xs, float), np.asarray(ys, float)
-    ok = (xs > 0) & (ys > 0)
-    if ok.sum() < 2:
-        return float("nan")
-    return float(np.polyfit(np.log(xs[ok]), np.log(ys[ok]), 1)[0])
+    """{key: median of valf} over the rows where valf is not None."""
+    groups = group_by([r for r in rows if valf(r) is not None], keyf)
+    return {k: float(np.median([valf(r) for r in rs])) for k, rs in groups.items()}
 
 
 def family_colors(rows):
@@ -74,20 +67,20 @@ def plot_time_vs_n(rows, outdir, written, fits):
         lines = sorted({(r["variant"], r["family"]) for r in wr})
         for var, fam in lines:
             lr = [r for r in wr if r["variant"] == var and r["family"] == fam]
-            ks = sorted({r["k"] for r in lr}, key=lambda k: (k == "max", int(k) if k.isdigit() else 0))
-            lr = [r for r in lr if r["k"] == ks[-1]]
+            kbig = max((r["k"] for r in lr), key=k_order)
+            lr = [r for r in lr if r["k"] == kbig]
             med = median_by(lr, lambda r: r["n"], lambda r: r["wall_s"])
             if len(med) < 2:
                 continue
             ns = sorted(med)
             ts = [med[n] for n in ns]
-            label = "%s %s (slope %.2f)" % (var, fam, slope(ns, ts))
+            label = "%s %s (slope %.2f)" % (var, fam, loglog_slope(ns, ts))
             ax.plot(ns, ts, marker=MARKERS.get(var, "d"), linestyle=STYLES.get(var, "-"),
                     color=colors[fam], label=label, markersize=4)
             f = fits.get(var + "/" + fam + "/" + w)
             if f:
                 rmed = median_by(lr, lambda r: r["n"], lambda r: r["r"])
-                kmed = median_by(lr, lambda r: r["n"], fit.k_value)
+                kmed = median_by(lr, lambda r: r["n"], k_value)
                 grid = np.geomspace(ns[0], ns[-1], 40)
                 rr = np.interp(grid, ns, [rmed[n] for n in ns])
                 kk = np.interp(grid, ns, [kmed[n] for n in ns])
@@ -97,7 +90,7 @@ def plot_time_vs_n(rows, outdir, written, fits):
         ax.set_yscale("log")
         ax.set_xlabel("n (vertices)")
         ax.set_ylabel("construction wall time (s)")
-        ax.set_title("time vs n, weights %s (dashed: NNLS model)" % w)
+        ax.set_title("time vs n, weights %s%s" % (w, " (dashed: NNLS model)" if fits else ""))
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
     save(fig, outdir, "time_vs_n", written)
@@ -116,7 +109,8 @@ def plot_memory_vs_n(rows, outdir, written):
             ns = sorted(med)
             ax.plot(ns, [med[n] for n in ns], marker=MARKERS.get(var, "d"),
                     linestyle=STYLES.get(var, "-"), color=colors[fam], markersize=4,
-                    label="%s %s (slope %.2f)" % (var, fam, slope(ns, [med[n] for n in ns])))
+                    label="%s %s (slope %.2f)" % (var, fam,
+                                                   loglog_slope(ns, [med[n] for n in ns])))
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("n")
@@ -130,10 +124,8 @@ def plot_memory_vs_n(rows, outdir, written):
 
 def k_groups(rows):
     """(variant, family, n, r_req, weights) groups with two or more k values."""
-    groups = defaultdict(list)
-    for r in rows:
-        if r["k"] != "":
-            groups[(r["variant"], r["family"], r["n"], r["r_req"], r["weights"])].append(r)
+    groups = group_by([r for r in rows if r["k"] != ""],
+                      ("variant", "family", "n", "r_req", "weights"))
     out = {g: rs for g, rs in groups.items() if len({r["k"] for r in rs}) >= 2}
     # Keep one n per (variant, family, r_req, weights): the one with the most
     # k values (a k sweep beats a k = 1 / max pair), then the largest n.
@@ -148,10 +140,10 @@ def k_groups(rows):
 
 
 def k_points(rs):
-    kk = sorted({r["k"] for r in rs}, key=lambda k: (k == "max", int(k) if k.isdigit() else 0))
+    kk = sorted({r["k"] for r in rs}, key=k_order)
     t = median_by(rs, lambda r: r["k"], lambda r: r["wall_s"])
     m = median_by(rs, lambda r: r["k"], lambda r: r["peak_tracked_bytes"])
-    x = [max(fit.k_value(next(r for r in rs if r["k"] == k)), 1) for k in kk]
+    x = [max(k_value(next(r for r in rs if r["k"] == k)), 1) for k in kk]
     return kk, x, [t.get(k) for k in kk], [m.get(k) for k in kk]
 
 
@@ -192,10 +184,23 @@ def plot_k(rows, outdir, written):
     return None
 
 
+EVENT_COLS = ("edge_events", "split_events", "multi_split_events", "switch_events",
+              "start_events")
+
+
+def event_value(r, col):
+    """A row's count for a panel, None where the variant has no such counter
+    (an empty cell, or a column this CSV does not have)."""
+    if col != "all events":
+        return r.get(col)
+    vals = [r.get(c) for c in EVENT_COLS if r.get(c) is not None]
+    return sum(vals) if vals else None
+
+
 def plot_events(rows, outdir, written):
-    rs = [r for r in rows if r.get("edge_events") is not None]
+    rs = [r for r in rows if any(r.get(c) is not None for c in EVENT_COLS)]
     if not rs:
-        return "events_vs_bounds: skipped (no counters)"
+        return "events_vs_bounds: skipped (no event counters)"
     panels = [("switch_events", lambda r: r["n"] * max(r["r"], 1), "n r"),
               ("start_events", lambda r: max(r["r"], 1) ** 2, "r^2"),
               ("all events", lambda r: r["n"], "n")]
@@ -203,14 +208,11 @@ def plot_events(rows, outdir, written):
     fig, axes = plt.subplots(1, 3, figsize=(18, 5))
     drawn = 0
     for ax, (col, bound, bname) in zip(axes, panels):
-        def val(r, col=col):
-            if col == "all events":
-                return sum(r[c] or 0 for c in ("edge_events", "split_events", "multi_split_events",
-                                                "switch_events", "start_events"))
-            return r[col]
         for var, fam in sorted({(r["variant"], r["family"]) for r in rs}):
-            pts = [(bound(r), val(r)) for r in rs if r["variant"] == var and r["family"] == fam]
-            pts = [(b, v) for b, v in pts if v and v > 0]
+            pts = [(bound(r), event_value(r, col)) for r in rs
+                   if r["variant"] == var and r["family"] == fam]
+            # Absent counters are no points; zeros have no place on a log axis.
+            pts = [(b, v) for b, v in pts if v is not None and v > 0]
             if not pts:
                 continue
             ax.scatter([p[0] for p in pts], [p[1] for p in pts], s=12, color=colors[fam],
@@ -224,7 +226,7 @@ def plot_events(rows, outdir, written):
             ax.set_yscale("log")
             ax.legend(fontsize=7)
         else:
-            ax.text(0.5, 0.5, "no %s recorded\n(no variant produces them yet)" % col,
+            ax.text(0.5, 0.5, "no %s recorded\n(zero or absent in every run)" % col,
                     ha="center", va="center", transform=ax.transAxes)
         ax.set_xlabel(bname)
         ax.set_ylabel(col)
@@ -232,28 +234,34 @@ def plot_events(rows, outdir, written):
         ax.grid(True, which="both", alpha=0.3)
     if drawn == 0:
         plt.close(fig)
-        return "events_vs_bounds: skipped (all event counters zero)"
+        return "events_vs_bounds: skipped (all event counters zero or absent)"
     save(fig, outdir, "events_vs_bounds", written)
     return None
 
 
 def main():
-    if len(sys.argv) != 3:
-        sys.stderr.write("usage: plot.py RESULTS.csv OUTDIR\n")
-        return 64
-    _, rows = fit.load_csv(sys.argv[1])
-    outdir = sys.argv[2]
-    os.makedirs(outdir, exist_ok=True)
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("csv")
+    ap.add_argument("outdir")
+    ap.add_argument("--fit", help="fit.py --json output: draw its model as dashed curves")
+    args = ap.parse_args()
+    _, rows = load_csv(args.csv)
+    fits, notes = {}, []
+    if args.fit:
+        with open(args.fit) as f:
+            fits = json.load(f)
+    else:
+        notes.append("time_vs_n: no --fit FIT.json, so no model curves")
+    os.makedirs(args.outdir, exist_ok=True)
     ok = [r for r in rows if r["status"] == "ok" and r["wall_s"] is not None and r["wall_s"] > 0]
-    written, notes = [], []
+    written = []
     if not ok:
         print("plot.py: no ok rows, nothing to plot")
         return 0
-    fits = fit.fit_groups(ok)
-    plot_time_vs_n(ok, outdir, written, fits)
-    plot_memory_vs_n(ok, outdir, written)
+    plot_time_vs_n(ok, args.outdir, written, fits)
+    plot_memory_vs_n(ok, args.outdir, written)
     for f in (plot_k, plot_events):
-        note = f(ok, outdir, written)
+        note = f(ok, args.outdir, written)
         if note:
             notes.append(note)
     for w in written:

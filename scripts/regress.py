@@ -3,10 +3,12 @@
 
 usage: regress.py RUN.csv BASELINE.csv [--time-tol 1.5] [--min-time 0.005] [--all]
 
-Per configuration (variant family n r_req k weights seed; repeats grouped):
+Per configuration (results.CONFIG_COLS but repeat; repeats grouped):
   - status, r, nodes, arcs and every counter must be equal: they are
     deterministic (counts only, ties broken by ids), so any difference means
-    the algorithm now does different work;
+    the algorithm now does different work.  An empty counter cell (the
+    variant has no such counter) equals only another empty cell: a counter
+    that appears or disappears is a change of what is counted;
   - peak tracked bytes within 1% (deterministic too, except for allocator
     growth policies that depend on nothing but the input; 1% leaves room for
     an incidental change of a struct's padding, not for a new array);
@@ -24,8 +26,10 @@ machine, back-to-back runs of the same binary (median of 5 repeats) stayed
 within x1.2 of each other in the two checks made so far (a small sample:
 re-measure the spread when the baseline is next regenerated), so 1.5x stays
 clear of noise while still catching the regressions that matter (an
-accidental extra O(n) scan per event costs far more than 50% at n = 3000).  Runs under --min-time seconds are not
-timed for the check: at that scale timer and scheduling jitter dominate.
+accidental extra O(n) scan per event costs far more than 50% at n = 3000).
+Runs under --min-time seconds are not timed for the check: at that scale
+timer and scheduling jitter dominate.  Run and baseline must have the same
+set of counter columns (in any order); otherwise regenerate the baseline.
 Prints a table (only the interesting lines unless --all) and exits 1 on any
 regression, 2 on a usage error or a missing reference.
 """
@@ -35,7 +39,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import fit  # noqa: E402
+from results import cell, config_key, counter_columns, group_by, load_csv  # noqa: E402
 
 REFERENCE = {"variant": "naive", "family": "star", "n": 3000, "weights": "unit", "seed": 1,
              "r_req": -1}
@@ -43,11 +47,7 @@ TRACKED_TOL = 0.01
 
 
 def group(rows):
-    out = {}
-    for r in rows:
-        key = (r["variant"], r["family"], r["n"], r["r_req"], r["k"], r["weights"], r["seed"])
-        out.setdefault(key, []).append(r)
-    return out
+    return group_by(rows, lambda r: config_key(r, drop=("repeat",)))
 
 
 def reference_time(rows):
@@ -61,7 +61,7 @@ def reference_time(rows):
 
 def fmt_key(key):
     v, fam, n, rr, k, w, s = key
-    return "%s %s n=%d%s%s %s s%s" % (v, fam, n, "" if rr == -1 else " r=%d" % rr,
+    return "%s %s n=%s%s%s %s s%s" % (v, fam, n, "" if rr == "-1" else " r=" + rr,
                                       "" if k == "" else " k=" + k, w, s)
 
 
@@ -73,13 +73,17 @@ def main():
     ap.add_argument("--min-time", type=float, default=0.005)
     ap.add_argument("--all", action="store_true", help="print every configuration")
     args = ap.parse_args()
-    counters = fit.counter_columns(args.baseline)
-    if counters != fit.counter_columns(args.run):
+    counters = counter_columns(args.baseline)
+    run_counters = counter_columns(args.run)
+    if set(counters) != set(run_counters):
         print("regress: the counter columns differ between run and baseline "
-              "(regenerate the baseline when counters change)")
+              "(regenerate the baseline when counters change): only in the run: %s; "
+              "only in the baseline: %s" % (
+                  " ".join(c for c in run_counters if c not in counters) or "-",
+                  " ".join(c for c in counters if c not in run_counters) or "-"))
         return 1
-    _, run_rows = fit.load_csv(args.run)
-    _, base_rows = fit.load_csv(args.baseline)
+    _, run_rows = load_csv(args.run)
+    _, base_rows = load_csv(args.baseline)
     run_ref, _ = reference_time(run_rows)
     base_ref, _ = reference_time(base_rows)
     if not run_ref or not base_ref:
@@ -90,7 +94,7 @@ def main():
     failures, lines = 0, []
     hdr = "%-46s %-8s %-10s %9s %9s %7s  %s" % ("configuration", "counters", "tracked",
                                               "base/ref", "run/ref", "change", "verdict")
-    for key in sorted(base_g, key=lambda k: tuple(str(x) for x in k)):
+    for key in sorted(base_g):
         b = base_g[key]
         r = run_g.get(key)
         if not r:
@@ -100,12 +104,16 @@ def main():
         problems = []
         b0, r0 = b[0], r[0]
         det = ["status", "r", "nodes", "arcs"] + counters
+        # Equal only as the same int or both None (an empty cell: the variant
+        # has no such counter); None != 0, so a counter that appears or
+        # vanishes for a variant is a difference.
         diffs = [c for c in det if b0[c] != r0[c]]
         diffs += [c for c in det for x in r[1:] if x[c] != r0[c] and c not in diffs]
         cnt = "ok" if not diffs else "DIFF"
         if diffs:
-            problems.append("differs: " + ", ".join("%s %s->%s" % (c, b0[c], r0[c])
-                                                    for c in diffs[:4]))
+            problems.append("differs: " + ", ".join(
+                "%s %s->%s" % (c, cell(b0[c]) or "empty", cell(r0[c]) or "empty")
+                for c in diffs[:4]))
         tracked = "-"
         if b0["peak_tracked_bytes"] is not None and r0["peak_tracked_bytes"] is not None:
             rel = (r0["peak_tracked_bytes"] - b0["peak_tracked_bytes"]) / max(
@@ -134,8 +142,8 @@ def main():
             lines.append(line)
     extra = [k for k in run_g if k not in base_g]
     print("reference: %s: baseline %.4gs, this run %.4gs (machine speed ratio %.2f)" % (
-        fmt_key((REFERENCE["variant"], REFERENCE["family"], REFERENCE["n"], -1, "",
-                 REFERENCE["weights"], REFERENCE["seed"])), base_ref, run_ref, run_ref / base_ref))
+        fmt_key(config_key(dict(REFERENCE, k="", repeat=0), drop=("repeat",))),
+        base_ref, run_ref, run_ref / base_ref))
     print(hdr)
     for line in lines:
         print(line)

@@ -9,10 +9,11 @@ import argparse
 import math
 import os
 import sys
-from collections import Counter, defaultdict
+from collections import Counter
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import fit  # noqa: E402
+import fit  # noqa: E402  (the fit, when no fit.txt is given)
+from results import cell, config_key, group_by, k_order, load_csv, loglog_slope  # noqa: E402
 
 FIGURES = [
     ("time_vs_n", "Construction time against n (log-log; slope in the legend, dashed: NNLS model)"),
@@ -31,20 +32,18 @@ def k_sweeps(rows):
     k, and the range is the k from 1 up to the last one where more than half
     of the time is above that (k = 1..4 on bench/sweeps/curves_k.spec's
     polygons); the slope over k = 1..8 is given too."""
-    groups = defaultdict(list)
-    for r in rows:
-        if r["status"] != "ok" or not r.get("k"):
-            continue
-        key = (r["variant"], r["family"], r["n"], r["r"], r["weights"], r["seed"])
-        groups[key].append(r)
+    swept = [r for r in rows if r["status"] == "ok" and r.get("k") and r["wall_s"] is not None]
+    # One table per configuration but for k; repeats share it.
+    groups = group_by(swept, lambda r: config_key(r, drop=("k", "repeat")))
     out = []
-    for key, rs in sorted(groups.items(), key=lambda kv: str(kv[0])):
+    for rs in sorted(groups.values(), key=lambda rs: (rs[0]["variant"], rs[0]["family"],
+                                                       rs[0]["n"], config_key(rs[0]))):
         numeric = [r for r in rs if str(r["k"]) != "max"]
         if len(numeric) < 3:
             continue
-        rs.sort(key=lambda r: math.inf if str(r["k"]) == "max" else int(r["k"]))
+        rs.sort(key=lambda r: k_order(r["k"]))
         floor = min(r["wall_s"] for r in rs)
-        numeric.sort(key=lambda r: int(r["k"]))
+        numeric.sort(key=lambda r: k_order(r["k"]))
         kmax = 1
         for r in numeric:
             if r["wall_s"] > 0 and (r["wall_s"] - floor) / r["wall_s"] > 0.5:
@@ -53,29 +52,25 @@ def k_sweeps(rows):
                 break
 
         def slope_upto(kk):
-            pts = [(math.log(int(r["k"])), math.log(r["wall_s"])) for r in numeric
-                   if int(r["k"]) <= kk and r["wall_s"] > 0]
-            if len(pts) < 2:
-                return "n/a"
-            mx = sum(x for x, _ in pts) / len(pts)
-            my = sum(y for _, y in pts) / len(pts)
-            sxx = sum((x - mx) ** 2 for x, _ in pts)
-            if sxx <= 0:
-                return "n/a"
-            return "%.3f" % (sum((x - mx) * (y - my) for x, y in pts) / sxx)
-        v, fam, n, r, w, seed = key
+            pts = [r for r in numeric if int(r["k"]) <= kk]
+            s = loglog_slope([int(r["k"]) for r in pts], [r["wall_s"] for r in pts])
+            return "n/a" if math.isnan(s) else "%.3f" % s
+        x0 = rs[0]
         out.append("**%s, %s n=%s r=%s %s seed %s** (%s crossings at t = 0): slope of log "
                    "time in log k %s over k = 1..%d, where more than half of the time is "
                    "above the fastest run's %.3f s (the r^3/k term dominates); %s over "
                    "k = 1..8" %
-                   (v, fam, n, r, w, seed, rs[0].get("crossings", "?"), slope_upto(kmax),
-                    kmax, floor, slope_upto(8)))
+                   (x0["variant"], x0["family"], x0["n"], x0["r"], x0["weights"], x0["seed"],
+                    cell(x0.get("crossings")) or "?", slope_upto(kmax), kmax, floor,
+                    slope_upto(8)))
         out.append("")
         out.append("| k | time (s) | peak tracked (MB) | start events |")
         out.append("|---|---|---|---|")
         for x in rs:
-            out.append("| %s | %.3f | %.2f | %s |" % (x["k"], x["wall_s"],
-                       x["peak_tracked_bytes"] / 1e6, x.get("start_events", "")))
+            mb = x["peak_tracked_bytes"]
+            # An empty cell stays empty: the variant does not count start events.
+            out.append("| %s | %.3f | %s | %s |" % (x["k"], x["wall_s"],
+                       "" if mb is None else "%.2f" % (mb / 1e6), cell(x.get("start_events"))))
         out.append("")
     return out
 
@@ -87,7 +82,7 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--fit", help="fit.py output to embed (recomputed if absent)")
     args = ap.parse_args()
-    comments, rows = fit.load_csv(args.csv)
+    comments, rows = load_csv(args.csv)
     outdir = os.path.dirname(os.path.abspath(args.out))
     lines = ["# wskel benchmark report", ""]
     lines.append("Source: `%s`, %d runs." % (os.path.relpath(args.csv, outdir), len(rows)))

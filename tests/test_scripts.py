@@ -1,0 +1,333 @@
+#!/usr/bin/python3
+"""test_scripts.py: tests of the benchmark scripts on small synthetic CSVs.
+
+  - scripts/results.py: the loader (comments apart, empty counter cells as
+    None, columns found by name), the configuration key, k order, slope;
+  - fit.py recovers the exact coefficients of rows made from its own model;
+  - plot.py writes its PNGs from a CSV and a fit.json, draws the model of
+    the fit.json (not a refit), and leaves absent counters out;
+  - regress.py passes identical runs and fails on a changed counter, where
+    an empty cell equals only an empty cell.
+No binary is needed.  Prints a line per test and 'N passed, N failed'; exits
+1 on any failure.  usage: /usr/bin/python3 tests/test_scripts.py
+"""
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import traceback
+
+os.environ["MPLBACKEND"] = "Agg"
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCRIPTS = os.path.join(ROOT, "scripts")
+sys.path.insert(0, SCRIPTS)
+import results  # noqa: E402
+
+PY = sys.executable
+TMP = tempfile.mkdtemp(prefix="wskel-test-scripts.")
+MID = ["r", "status", "signal", "wall_s", "cpu_s", "peak_rss_bytes", "peak_tracked_bytes",
+       "nodes", "arcs", "crossings", "validated"]
+# No stale_events (it is being removed) and a counter the scripts never heard of.
+COUNTERS = ["edge_events", "split_events", "multi_split_events", "switch_events",
+            "start_events", "cache_hits", "queue_pops", "brand_new_counter"]
+ARR_ONLY = {"switch_events", "start_events", "cache_hits"}
+COEF = [2e-8, 5e-10, 3e-9, 1e-3]   # c1 n^2, c2 r^3/k, c3 n r log n, c0
+
+
+def model_time(n, r, k):
+    row = {"k": k, "r": r}
+    x = [n * n, r ** 3 / max(results.k_value(row), 1.0), n * max(r, 1) * math.log(max(n, 2)), 1]
+    return sum(c * v for c, v in zip(COEF, x))
+
+
+def make_row(variant, family, n, k="", seed=1, repeat=0, weights="unit", wall=None):
+    r = n // 3
+    row = {"variant": variant, "family": family, "n": n, "r_req": -1, "k": k,
+           "weights": weights, "seed": seed, "repeat": repeat, "r": r, "status": "ok",
+           "signal": None, "wall_s": wall if wall is not None else model_time(n, r, k),
+           "cpu_s": 0.001, "peak_rss_bytes": 1000 * n, "peak_tracked_bytes": 100 * n + 7,
+           "nodes": 2 * n - 2, "arcs": 2 * n - 3, "crossings": r * (r - 1) // 2,
+           "validated": 1, "message": ""}
+    for i, c in enumerate(COUNTERS):
+        absent = variant != "arrangement" and c in ARR_ONLY
+        row[c] = None if absent else n * (i + 1) + seed
+    return row
+
+
+def write_csv(name, rows, counters=COUNTERS, comments=("date: 2026-01-01", "cores: 2")):
+    path = os.path.join(TMP, name)
+    cols = list(results.CONFIG_COLS) + MID + list(counters) + ["message"]
+    with open(path, "w", newline="") as f:
+        f.write("# wskel-bench results (synthetic)\n")
+        for c in comments:
+            f.write("# %s\n" % c)
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(cols)
+        for r in rows:
+            # repr keeps the times exact, so the fit sees the model's own numbers.
+            w.writerow([repr(r[c]) if isinstance(r[c], float) else results.cell(r[c])
+                        for c in cols])
+    return path
+
+
+def run(script, *args):
+    p = subprocess.run([PY, os.path.join(SCRIPTS, script)] + list(args), capture_output=True,
+                       text=True, cwd=ROOT, timeout=120)
+    return p.returncode, p.stdout + p.stderr
+
+
+def sweep_rows():
+    """Two variants, two families; arrangement with a k sweep at n = 1000."""
+    rows = []
+    for fam in ("star", "crossing"):
+        for n in (200, 500, 1000, 2000, 5000):
+            rows.append(make_row("naive", fam, n, wall=1e-9 * n * n + 1e-4))
+            for k in ("1", "max"):
+                rows.append(make_row("arrangement", fam, n, k))
+        for k in ("2", "4", "8"):
+            rows.append(make_row("arrangement", fam, 1000, k))
+    return rows
+
+
+# ---------------------------------------------------------------- results.py
+
+def test_loader_comments_and_types():
+    path = write_csv("load.csv", [make_row("naive", "star", 100), make_row("arrangement", "star",
+                                                                            100, "max")])
+    comments, rows = results.load_csv(path)
+    assert comments == ["wskel-bench results (synthetic)", "date: 2026-01-01", "cores: 2"], comments
+    assert len(rows) == 2, rows
+    n, a = rows
+    assert n["n"] == 100 and n["r_req"] == -1 and n["k"] == "" and a["k"] == "max"
+    assert isinstance(n["wall_s"], float) and n["signal"] is None and n["message"] == ""
+    assert list(n)[:8] == list(results.CONFIG_COLS), list(n)
+
+
+def test_loader_empty_counters_are_none():
+    path = write_csv("empty.csv", [make_row("naive", "star", 100), make_row("arrangement",
+                                                                             "star", 100, "1")])
+    assert results.counter_columns(path) == COUNTERS, results.counter_columns(path)
+    _, (n, a) = results.load_csv(path)
+    for c in ARR_ONLY:
+        assert n[c] is None, (c, n[c])
+        assert isinstance(a[c], int) and a[c] > 0, (c, a[c])
+    assert n["edge_events"] == 101 and n["brand_new_counter"] == 801
+    assert "stale_events" not in n
+
+
+def test_loader_rejects_bad_integer_and_pads_short_rows():
+    path = write_csv("bad.csv", [make_row("naive", "star", 100)])
+    text = open(path).read().replace(",101,", ",1.5,")
+    open(path, "w").write(text)
+    try:
+        results.load_csv(path)
+        raise AssertionError("a counter of 1.5 was accepted")
+    except ValueError as e:
+        assert "edge_events" in str(e), e
+    with open(path, "w") as f:
+        f.write(",".join(list(results.CONFIG_COLS) + MID + ["message"]) + "\n")
+        f.write("naive,star,100,-1,,unit,1,0,33\n")
+    _, rows = results.load_csv(path)
+    assert rows[0]["r"] == 33 and rows[0]["nodes"] is None and rows[0]["message"] == ""
+
+
+def test_config_key_one_definition():
+    row = make_row("arrangement", "star", 300, "8", seed=2, repeat=1)
+    path = write_csv("key.csv", [row])
+    _, (loaded,) = results.load_csv(path)
+    _, header, (raw,) = results.read_raw(path)
+    as_json = dict(loaded, k=8)
+    keys = {results.config_key(loaded), results.config_key(dict(zip(header, raw))),
+            results.config_key(as_json)}
+    assert keys == {("arrangement", "star", "300", "-1", "8", "unit", "2", "1")}, keys
+    # wskel-bench's --dry-run / --resume key, with JSON's null k as the empty cell
+    j = {"variant": "naive", "family": "comb", "n": 40, "r_req": -1, "k": None,
+         "weights": "unit", "seed": 3, "repeat": 0}
+    assert results.config_text(j) == "naive,comb,40,-1,,unit,3,0", results.config_text(j)
+    assert results.config_key(loaded, drop=("repeat",))[-1] == "2"
+
+
+def test_k_order_value_group_slope():
+    ks = ["max", "16", "", "2", "1", 4]
+    assert sorted(ks, key=results.k_order) == ["", "1", "2", 4, "16", "max"]
+    assert results.k_value({"k": "", "r": 50}) == 1.0
+    assert results.k_value({"k": "max", "r": 50}) == 50.0
+    assert results.k_value({"k": "16", "r": 50}) == 16.0
+    g = results.group_by([{"a": 1, "b": 2}, {"a": 1, "b": 3}, {"a": 2, "b": 2}], ("a",))
+    assert list(g) == [(1,), (2,)] and len(g[(1,)]) == 2
+    s = results.loglog_slope([1, 2, 4, 8, None], [3, 12, 48, 192, 5])
+    assert abs(s - 2.0) < 1e-12, s
+    assert math.isnan(results.loglog_slope([4, 4], [1, 2]))
+    assert math.isnan(results.loglog_slope([1, 2], [0, 3]))
+
+
+# ---------------------------------------------------------------- fit.py
+
+def test_fit_recovers_coefficients():
+    rows = [r for r in sweep_rows() if r["variant"] == "arrangement"]
+    path = write_csv("fit.csv", rows)
+    out = os.path.join(TMP, "fit.json")
+    rc, text = run("fit.py", path, "--json", out)
+    assert rc == 0, text
+    fits = json.load(open(out))
+    assert set(fits) == {"arrangement", "arrangement/crossing/unit", "arrangement/star/unit"}
+    for label, f in fits.items():
+        for got, want in zip(f["coef"], COEF):
+            assert abs(got - want) <= 1e-6 * want, (label, f["coef"], COEF)
+        assert abs(f["r2"] - 1.0) < 1e-9 and f["median_rel_err"] < 1e-9, (label, f)
+        assert abs(sum(f["share"]) - 1.0) < 1e-9 and f["share_at"]["n"] == 5000
+    assert fits["arrangement"]["points"] == len(rows)
+    sys.path.insert(0, SCRIPTS)
+    import fit
+    # fit.txt and fit.json say the same: the table is the JSON printed.
+    assert text == fit.format_fits(fits), text
+    assert text.startswith("model: time = c1 n^2 + c2 r^3/k + c3 n r log n + c0  (NNLS, "
+                           "relative error, scipy.optimize.nnls)\n"), text
+
+
+# ---------------------------------------------------------------- plot.py
+
+def test_plot_writes_pngs():
+    path = write_csv("plot.csv", sweep_rows())
+    fitj = os.path.join(TMP, "plotfit.json")
+    rc, text = run("fit.py", path, "--json", fitj)
+    assert rc == 0, text
+    outdir = os.path.join(TMP, "plots")
+    rc, text = run("plot.py", path, outdir, "--fit", fitj)
+    assert rc == 0, text
+    for name in ("time_vs_n", "memory_vs_n", "k_effect", "k_tradeoff", "events_vs_bounds"):
+        png = os.path.join(outdir, name + ".png")
+        assert os.path.exists(png), (png, text)
+        with open(png, "rb") as f:
+            head = f.read(8)
+        assert head == b"\x89PNG\r\n\x1a\n" and os.path.getsize(png) > 1000, png
+
+
+def capture_figures(fn, *args):
+    """Run a plot function with plot.save replaced, return {name: figure}."""
+    import plot
+    figs, save = {}, plot.save
+    plot.save = lambda fig, outdir, name, written: figs.__setitem__(name, fig)
+    try:
+        note = fn(*args)
+    finally:
+        plot.save = save
+    return figs, note
+
+
+def test_plot_draws_the_given_fit():
+    import plot
+    import matplotlib.pyplot as plt
+    path = write_csv("plotfit.csv", sweep_rows())
+    # A model no fit of these rows gives: time 7 s everywhere.  Seeing it
+    # drawn shows the curve comes from --fit's file, not from a refit.
+    fitj = os.path.join(TMP, "seven.json")
+    json.dump({"arrangement/star/unit": {"coef": [0.0, 0.0, 0.0, 7.0]}}, open(fitj, "w"))
+    argv, sys.argv = sys.argv, ["plot.py", path, os.path.join(TMP, "p2"), "--fit", fitj]
+    try:
+        figs, rc = capture_figures(plot.main)
+    finally:
+        sys.argv = argv
+    assert rc == 0 and "time_vs_n" in figs, (rc, figs)
+    dashed = [ln for ax in figs["time_vs_n"].axes for ln in ax.get_lines()
+              if ln.get_linestyle() == "--"]
+    assert len(dashed) == 1, len(dashed)
+    assert all(abs(y - 7.0) < 1e-12 for y in dashed[0].get_ydata()), dashed[0].get_ydata()
+    plt.close("all")
+
+
+def test_plot_skips_absent_counters():
+    import plot
+    import matplotlib.pyplot as plt
+    _, rows = results.load_csv(write_csv("events.csv", sweep_rows()))
+    figs, note = capture_figures(plot.plot_events, rows, TMP, [])
+    assert note is None, note
+    switch, _, every = figs["events_vs_bounds"].axes
+    labels = lambda ax: sorted(c.get_label() for c in ax.collections)  # noqa: E731
+    # naive has no switch_events (empty cells): no naive points, not zeros.
+    assert labels(switch) == ["arrangement crossing", "arrangement star"], labels(switch)
+    assert "naive star" in labels(every), labels(every)
+    naive = [c for c in every.collections if c.get_label() == "naive star"][0]
+    want = sorted(r["edge_events"] + r["split_events"] + r["multi_split_events"]
+                  for r in rows if r["variant"] == "naive" and r["family"] == "star")
+    assert sorted(naive.get_offsets()[:, 1]) == want
+    nocount = [dict(r, **{c: None for c in plot.EVENT_COLS}) for r in rows]
+    figs, note = capture_figures(plot.plot_events, nocount, TMP, [])
+    assert not figs and "skipped" in note, note
+    plt.close("all")
+
+
+# ---------------------------------------------------------------- regress.py
+
+def regress_rows():
+    rows = []
+    for rep in range(2):
+        rows.append(make_row("naive", "star", 3000, repeat=rep, wall=0.5))
+        rows.append(make_row("naive", "comb", 300, repeat=rep, wall=0.02))
+        rows.append(make_row("arrangement", "star", 300, "1", repeat=rep, wall=0.03))
+    return rows
+
+
+def regress(base_rows, run_rows, base_counters=COUNTERS, run_counters=COUNTERS):
+    base = write_csv("base.csv", base_rows, base_counters)
+    runf = write_csv("run.csv", run_rows, run_counters)
+    return run("regress.py", runf, base)
+
+
+def test_regress_identical_passes():
+    rows = regress_rows()
+    assert any(r["switch_events"] is None for r in rows)   # empty in both
+    rc, text = regress(rows, rows)
+    assert rc == 0, text
+    assert "3 configurations compared, 0 regressions" in text, text
+
+
+def test_regress_changed_counter_fails():
+    rows = regress_rows()
+    changed = [dict(r) for r in rows]
+    changed[2]["queue_pops"] += 1
+    rc, text = regress(rows, changed)
+    assert rc == 1 and "REGRESSION" in text and "queue_pops" in text, text
+
+
+def test_regress_empty_versus_zero_fails():
+    rows = regress_rows()
+    changed = [dict(r) for r in rows]
+    for r in changed:
+        if r["family"] == "comb":
+            r["switch_events"] = 0
+    rc, text = regress(rows, changed)
+    assert rc == 1 and "switch_events empty->0" in text, text
+
+
+def test_regress_counter_columns_by_name():
+    rows = regress_rows()
+    rc, text = regress(rows, rows, run_counters=list(reversed(COUNTERS)))
+    assert rc == 0, text
+    old = [dict(r, stale_events=0) for r in rows]
+    rc, text = regress(old, rows, base_counters=COUNTERS + ["stale_events"])
+    assert rc == 1 and "only in the baseline: stale_events" in text, text
+
+
+def main():
+    tests = [(k, v) for k, v in globals().items() if k.startswith("test_") and callable(v)]
+    failed = 0
+    for name, fn in tests:
+        try:
+            fn()
+            print("ok   " + name)
+        except Exception:
+            failed += 1
+            print("FAIL " + name)
+            traceback.print_exc()
+    shutil.rmtree(TMP, ignore_errors=True)
+    print("test_scripts.py: %d passed, %d failed" % (len(tests) - failed, failed))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
