@@ -41,6 +41,8 @@ static const char usage_text[] =
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
     "  --threads N        OpenMP threads for variants that use them (default 1)\n"
     "  --verbose          on failure, also say where in wskel it was raised\n"
+    "  --check-invariants after every group of events, check the wavefront's and\n"
+    "                     the variant's invariants (slow: O(n) per group; tests)\n"
     "  --list-variants    the variants, one per line: name and summary\n"
     "  --list-counters    the counters of --variant (default naive), one per line:\n"
     "                     name, tab, meaning (the keys of the JSON stats)\n"
@@ -94,6 +96,7 @@ int main(int argc, char **argv) {
     const char *variant = "naive", *format = "json", *outpath = NULL, *input = NULL;
     const char *offsets_arg = NULL;
     bool check = true, stats = false, k_given = false, verbose = false, list_counters = false;
+    bool check_invariants = false;
     uint32_t k = 1;
     wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
     int threads = 1;
@@ -116,6 +119,8 @@ int main(int argc, char **argv) {
             list_counters = true;
         } else if (!strcmp(a, "--verbose")) {
             verbose = true;
+        } else if (!strcmp(a, "--check-invariants")) {
+            check_invariants = true;
         } else if (!strcmp(a, "--variant")) {
             NEED_ARG();
             variant = argv[++i];
@@ -196,6 +201,7 @@ int main(int argc, char **argv) {
     R.opt.k = k;
     R.opt.collinear = collinear;
     R.opt.threads = threads;
+    R.opt.check_invariants = check_invariants;
 
     int rc = 0;
     wk_polygon *P = NULL;

@@ -19,8 +19,8 @@
 ** speed, which broke the wavefront ("unresolved spike", cycles of two
 ** vertices, nodes off their lines) on 32 of 35 such failures of the
 ** reference; as collinear vertices the collinear rule takes them, as it
-** does exactly collinear ones (tests/test_degenerate.py, monotone polygons
-** in random directions).  Opposite senses (antiparallel: a spike) keep the
+** does exactly collinear ones (tests/test_degenerate.py: sweep-direction
+** polygons with equal-x chains, turned in random directions).  Opposite senses (antiparallel: a spike) keep the
 ** old bar WK_ANTIPARALLEL_SIN: at 1e-9, seven small turned grid polygons
 ** that passed before failed with "antiparallel wavefront vertex". */
 #define WK_PARALLEL_SIN 1e-9

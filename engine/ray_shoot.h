@@ -1,8 +1,8 @@
 /*
 ** ray_shoot.h: a uniform bucket grid over segments and ray shooting against
-** a polygon's boundary: the geometric search structures more than one
-** variant uses (000's A(P) segments end where their ray first meets the
-** boundary; motorcycles of 002 crash into walls the same way).
+** a polygon's boundary: geometric search structures for any variant whose
+** rays end where they first meet the boundary (000's A(P) segments; 002's
+** traces crash into walls the same way).
 **
 ** Design note
 ** -----------

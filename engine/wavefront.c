@@ -293,6 +293,48 @@ static wk_status refresh(wk_wavefront *W) {
     return WK_OK;
 }
 
+/* The invariants of wavefront_internal.h over the whole wavefront, O(nv +
+** queue): every alive vertex's neighbours are alive and point back, every
+** cycle has at least 3 vertices, each vertex lies on the offset lines of
+** both its edges (within the tolerance its own speed allows), and every
+** alive vertex with a finite candidate is queued.  The queue's heap order
+** is checked by the queue. */
+static wk_status check_invariants(wk_wavefront *W) {
+    wk_run *R = W->R;
+    const char *name = W->P->name;
+    double t = W->t_now;
+    W->stamp++;
+    for (uint32_t v = 0; v < W->nv; v++) {
+        const wk_wf_vertex *V = &W->v[v];
+        if (!V->alive) continue;
+        if (!W->v[V->next].alive || !W->v[V->prev].alive || W->v[V->next].prev != v)
+            return WK_FAIL(R, WK_EALGO, name, 0, "invariant: vertex %u's cycle is broken at t = %.17g", v, t);
+        wk_point p = wk_wf_pos(V, t);
+        double speed = fabs(V->vel.x) + fabs(V->vel.y);
+        double tol = 1e3 * (W->eps_d + speed * W->eps_t) * (1 + t);
+        double din = fabs(wk_offset_distance(&W->L[V->ein], p, t));
+        double dout = fabs(wk_offset_distance(&W->L[V->eout], p, t));
+        if (V->vkind != WK_VEL_ANTIPARALLEL && (din > tol || dout > tol))
+            return WK_FAIL(R, WK_EALGO, name, 0,
+                           "invariant: vertex %u is %.3g / %.3g off its edges' offset lines at t = %.17g",
+                           v, din, dout, t);
+        if (V->ev_kind != WK_WF_NONE && isfinite(V->ev_t) && !wk_event_queue_contains(&W->Q, v))
+            return WK_FAIL(R, WK_EALGO, name, 0, "invariant: vertex %u's candidate is not queued", v);
+        if (V->seen == W->stamp) continue;
+        uint32_t len = 0, u = v;
+        do {
+            W->v[u].seen = W->stamp;
+            u = W->v[u].next;
+        } while (u != v && ++len <= W->nv);
+        if (len + 1 < 3 || len > W->nv)
+            return WK_FAIL(R, WK_EALGO, name, 0, "invariant: a cycle of %u vertices at t = %.17g", len + 1, t);
+    }
+    if (!wk_event_queue_check(&W->Q))
+        return WK_FAIL(R, WK_EALGO, name, 0, "invariant: the event queue is out of order");
+    if (W->finder->check && W->finder->check(W->finder_ud, W) != WK_OK) return R->err.code;
+    return WK_OK;
+}
+
 /* Resolve the group at time t, let the finder see what changed, then give
 ** the touched vertices new candidates. */
 static wk_status process_group(wk_wavefront *W, double t) {
@@ -300,7 +342,8 @@ static wk_status process_group(wk_wavefront *W, double t) {
     if (wf_resolve_group(W, t) != WK_OK) return R->err.code;
     if (W->finder->after_group && W->finder->after_group(W->finder_ud, W, t) != WK_OK)
         return R->err.code;
-    return refresh(W);
+    if (refresh(W) != WK_OK) return R->err.code;
+    return R->opt.check_invariants ? check_invariants(W) : WK_OK;
 }
 
 static wk_status simulate(wk_wavefront *W) {

@@ -6,8 +6,8 @@
 ** wavefront_group.c the resolution of a group of simultaneous events.
 **
 ** A variant supplies a wk_split_finder: how a reflex vertex's split event is
-** found (every piece of its cycle, the bisector arrangement, a motorcycle
-** graph).  Everything else (edge events, resolution of event groups, the
+** found (every piece of its cycle, 000's bisector segments, 002's
+** traces).  Everything else (edge events, resolution of event groups, the
 ** collinear rule, the skeleton) is the wavefront's, so variants differ only
 ** in what the papers make them differ in.  The wavefront itself is opaque:
 ** a finder sees it through the functions below and never writes it except
@@ -42,7 +42,10 @@ typedef struct wk_wavefront wk_wavefront;
 ** next_time / process_next (may be NULL): the finder's own events (e.g.
 **   000's start and switch events), processed before any wavefront event
 **   that is not earlier; process_next may call wk_wf_reschedule for
-**   vertices whose split candidate moved. */
+**   vertices whose split candidate moved.
+** check (may be NULL): with R->opt.check_invariants, after every group and
+**   the finder's after_group: the finder's own invariants; WK_EALGO with a
+**   message if one is broken. */
 typedef struct wk_split_finder {
     void (*full)(void *ud, wk_wavefront *W, uint32_t v);
     void (*incremental)(void *ud, wk_wavefront *W, uint32_t v);
@@ -50,6 +53,7 @@ typedef struct wk_split_finder {
     wk_status (*after_group)(void *ud, wk_wavefront *W, double t);
     double (*next_time)(void *ud);
     wk_status (*process_next)(void *ud, wk_wavefront *W);
+    wk_status (*check)(void *ud, const wk_wavefront *W);
     bool local_refresh; /* candidates need no walk over the touched cycles:
                            the finder reschedules what it changes */
 } wk_split_finder;

@@ -675,8 +675,33 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
     return schedule_seg(A, W, si);
 }
 
+/* --check-invariants: both arrangements consistent, every live segment's
+** vertex alive and reflex and owning it, F on a live piece or unknown. */
+static wk_status ar_check(void *ud, const wk_wavefront *W) {
+    const ar_state *A = ud;
+    const char *name = wk_wf_polygon(W)->name;
+    if (!wk_arrangement_check(&A->fwd) || !wk_arrangement_check(&A->rev))
+        return WK_FAIL(A->R, WK_EALGO, name, 0, "invariant: the arrangement is inconsistent");
+    for (uint32_t si = 0; si < A->n_s; si++) {
+        const ar_seg *S = &A->s[si];
+        if (S->v == WK_NONE) continue;
+        if (!wk_wf_alive(W, S->v) || A->seg_of[S->v] != si)
+            return WK_FAIL(A->R, WK_EALGO, name, 0, "invariant: segment %u's vertex %u is gone", si, S->v);
+        if (S->pa != WK_NONE && (!wk_wf_alive(W, S->pa) || wk_wf_next(W, S->pa) != S->pb))
+            return WK_FAIL(A->R, WK_EALGO, name, 0, "invariant: segment %u's F is on a dead piece", si);
+    }
+    return WK_OK;
+}
+
 static const wk_split_finder arrangement_finder = {
-    ar_full, ar_incremental, ar_start, ar_after_group, ar_next_time, ar_process_next, true,
+    .full = ar_full,
+    .incremental = ar_incremental,
+    .start = ar_start,
+    .after_group = ar_after_group,
+    .next_time = ar_next_time,
+    .process_next = ar_process_next,
+    .check = ar_check,
+    .local_refresh = true,
 };
 
 static wk_status arrangement_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {

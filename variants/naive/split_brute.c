@@ -32,5 +32,6 @@ static void brute_incremental(void *ud, wk_wavefront *W, uint32_t v) {
 }
 
 const wk_split_finder naive_split_finder = {
-    brute_full, brute_incremental, NULL, NULL, NULL, NULL, false,
+    .full = brute_full,
+    .incremental = brute_incremental,
 };
