@@ -7,7 +7,7 @@ PY      := /usr/bin/python3
 WARN    := -Wall -Wextra -Werror
 CSTD    := -std=c11 -ffp-contract=off -fno-fast-math
 OPT     ?= -O2 -g
-CFLAGS  := $(CSTD) $(WARN) $(OPT) -fopenmp -Iengine -Ivariants -Ibench
+CFLAGS  := $(CSTD) $(WARN) $(OPT) -fopenmp -Iengine -Ivariants -Ibench/gen
 LDLIBS  := -lm -lgmp -fopenmp
 XML_CFLAGS := $(shell pkg-config --cflags libxml-2.0 2>/dev/null)
 XML_LIBS   := $(shell pkg-config --libs libxml-2.0 2>/dev/null)
@@ -16,15 +16,20 @@ LDLIBS  += $(XML_LIBS)
 
 ENGINE_SRC  := $(sort $(wildcard engine/*.c))
 VARIANT_SRC := variants/registry.c $(sort $(wildcard variants/*/*.c))
-BENCHLIB_SRC := $(filter-out bench/wskel_%.c,$(sort $(wildcard bench/*.c)))
-LIB_SRC := $(ENGINE_SRC) $(VARIANT_SRC) $(BENCHLIB_SRC)
+# The polygon generators (build/libwskel-gen.a) and the parts of the bench
+# harness other than its main (linked into bin/wskel-bench only).
+GEN_SRC   := $(sort $(wildcard bench/gen/*.c))
+BENCH_SRC := $(filter-out bench/wskel_%.c,$(sort $(wildcard bench/*.c)))
+LIB_SRC := $(ENGINE_SRC) $(VARIANT_SRC)
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
 
 B  := build
 BA := build-asan
 LIB     := $(B)/libwskel.a
 LIBASAN := $(BA)/libwskel.a
-HDRS := $(wildcard engine/*.h variants/*.h variants/*/*.h bench/*.h tests/*.h)
+GENLIB     := $(B)/libwskel-gen.a
+GENLIBASAN := $(BA)/libwskel-gen.a
+HDRS := $(wildcard engine/*.h variants/*.h variants/*/*.h bench/*.h bench/gen/*.h tests/*.h)
 
 PROGS := bin/wskel bin/wskel-gen
 HAVE_CGAL := $(wildcard /usr/include/CGAL/create_straight_skeleton_2.h)
@@ -38,7 +43,7 @@ endif
 
 .PHONY: all test test-unit test-asan test-cli test-py bench curves regress clean setup
 
-all: $(LIB) $(PROGS)
+all: $(LIB) $(GENLIB) $(PROGS)
 
 $(B)/%.o: %.c $(HDRS)
 	@mkdir -p $(dir $@)
@@ -46,28 +51,36 @@ $(B)/%.o: %.c $(HDRS)
 $(BA)/%.o: %.c $(HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all -c $< -o $@
+# Every run a unit test opens is a checked one (debug allocator backend,
+# strict close; see wk_run_init_checked in engine/wskel.h).  The library is
+# built without it.
+$(B)/tests/%.o $(BA)/tests/%.o: CFLAGS += -DWK_CHECKED_RUNS
 
 $(LIB): $(LIB_SRC:%.c=$(B)/%.o)
 	@rm -f $@; ar rcs $@ $^
 $(LIBASAN): $(LIB_SRC:%.c=$(BA)/%.o)
 	@rm -f $@; ar rcs $@ $^
+$(GENLIB): $(GEN_SRC:%.c=$(B)/%.o)
+	@rm -f $@; ar rcs $@ $^
+$(GENLIBASAN): $(GEN_SRC:%.c=$(BA)/%.o)
+	@rm -f $@; ar rcs $@ $^
 
 bin/wskel: $(B)/cli/main.o $(LIB)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-bin/wskel-gen: $(B)/bench/wskel_gen.o $(LIB)
+bin/wskel-gen: $(B)/bench/wskel_gen.o $(GENLIB) $(LIB)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-bin/wskel-bench: $(B)/bench/wskel_bench.o $(LIB)
+bin/wskel-bench: $(B)/bench/wskel_bench.o $(BENCH_SRC:%.c=$(B)/%.o) $(GENLIB) $(LIB)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 bin/wskel-cgal: tests/cgal/wskel_cgal.cpp
 	@mkdir -p bin
 	$(CXX) -std=c++17 -O2 -Wall -Wextra -Werror $< -o $@ -lgmp -lmpfr
 
-$(B)/tests/run_tests: $(TEST_SRC:%.c=$(B)/%.o) $(LIB)
+$(B)/tests/run_tests: $(TEST_SRC:%.c=$(B)/%.o) $(GENLIB) $(LIB)
 	$(CC) $(CFLAGS) $^ -o $@ -lcriterion $(LDLIBS)
-$(BA)/tests/run_tests: $(TEST_SRC:%.c=$(BA)/%.o) $(LIBASAN)
+$(BA)/tests/run_tests: $(TEST_SRC:%.c=$(BA)/%.o) $(GENLIBASAN) $(LIBASAN)
 	$(CC) $(CFLAGS) -fsanitize=address,undefined $^ -o $@ -lcriterion $(LDLIBS)
 $(BA)/wskel: $(BA)/cli/main.o $(LIBASAN)
 	$(CC) $(CFLAGS) -fsanitize=address,undefined $^ -o $@ $(LDLIBS)
@@ -87,6 +100,7 @@ test-py: all
 	$(PY) tests/test_outputs.py
 	$(PY) tests/test_degenerate.py
 	$(PY) tests/test_cgal_agreement.py
+	$(PY) tests/test_scripts.py
 
 setup:
 	bash .ci/install-deps

@@ -1,6 +1,6 @@
 /*
 ** wskel_gen.c: bin/wskel-gen, the command-line face of the polygon
-** generators (bench/generators.h): one family, one polygon, written as
+** generators (bench/gen/generators.h): one family, one polygon, written as
 ** .wpoly or as GraphML in the Salzburg/surfer2 format.
 **
 ** Output goes to FILE.tmp.PID and is renamed to FILE only on success, so a
