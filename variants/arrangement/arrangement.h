@@ -8,9 +8,9 @@
 #include "variant.h"
 
 #define AR_COUNTER_LIST(X)                                                                      \
-    X(switch_events, "a convex wavefront vertex jumped to the next segment of the arrangement") \
-    X(start_events, "a Steiner vertex started on a segment where a wavefront vertex crossed it")\
-    X(brute_force_split_scans, "a split searched over the whole cycle (segment not yet built)") \
+    X(switch_events, "a moving Steiner vertex F passed a wavefront vertex onto the next piece") \
+    X(start_events, "F or a reflex vertex reached a crossing of A(P) (000's start events)")      \
+    X(brute_force_split_scans, "splits searched over a whole cycle (F unknown or no segment yet)") \
     X(arrangement_inserts, "segments inserted into the dynamic arrangement")                    \
     X(arrangement_removes, "segments removed from the dynamic arrangement")                     \
     X(arrangement_crossings_initial, "proper crossings among the segments of A(P)")             \
