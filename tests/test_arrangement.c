@@ -24,26 +24,7 @@
 
 #include "arrangement/bisector_arrangement.h"
 #include "generators.h"
-#include "fixtures.h"
-
-static const double PI = 3.14159265358979323846;
-
-static bool quick(void) {
-    const char *q = getenv("WSKEL_TEST_QUICK");
-    return q && *q && strcmp(q, "0");
-}
-
-static wk_status gen(wk_run *R, const char *family, uint32_t n, int64_t r, uint64_t seed,
-                     const char *weights, wk_polygon **P) {
-    wk_gen_params g;
-    wk_gen_params_init(&g);
-    g.family = family;
-    g.n = n;
-    g.r = r;
-    g.seed = seed;
-    if (weights && wk_gen_parse_weights(R, weights, &g) != WK_OK) return R->err.code;
-    return wk_generate(R, &g, P);
-}
+#include "helpers.h"
 
 static wk_polygon *poly(wk_run *R, uint32_t n, const double *xy, const double *w) {
     double x[64], y[64];
@@ -51,9 +32,7 @@ static wk_polygon *poly(wk_run *R, uint32_t n, const double *xy, const double *w
         x[i] = xy[2 * i];
         y[i] = xy[2 * i + 1];
     }
-    wk_polygon *P = NULL;
-    cr_assert_eq(wk_polygon_from_arrays(R, n, x, y, w, "hand", NULL, &P), WK_OK, "%s", R->err.msg);
-    return P;
+    return polygon_named(R, n, x, y, w, "hand");
 }
 
 static uint64_t rng(uint64_t *s) {
@@ -91,7 +70,7 @@ Test(arrangement, notched_square_unit) {
     cr_assert_eq(K, 0);
     WK_FREE_ARRAY(&R, S, r);
     wk_polygon_free(&R, P);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(arrangement, notched_square_weighted) {
@@ -116,7 +95,7 @@ Test(arrangement, notched_square_weighted) {
     cr_assert_float_eq(S[0].len, hypot(4.0 / 3.0, 8.0), 1e-12);
     WK_FREE_ARRAY(&R, S, r);
     wk_polygon_free(&R, P);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* Plus-shaped cross, arms of width 2 reaching 3 from the centre.  The four
@@ -175,7 +154,7 @@ Test(arrangement, cross_segments_meet_in_the_centre) {
     wk_arrangement_clear(&R, &A);
     WK_FREE_ARRAY(&R, S, r);
     wk_polygon_free(&R, P);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* ------------------------------------------------------------ ray shooting */
@@ -279,7 +258,7 @@ Test(arrangement, ray_shooting_matches_brute_force) {
             }
     cr_assert_gt(checked, 1000);
     (void)vertex_hits;
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* A ray through a vertex (exactly, and within the tolerance) hits the vertex,
@@ -311,7 +290,7 @@ Test(arrangement, ray_through_a_vertex_hits_the_vertex) {
     cr_assert_eq(h.edge, 2);
     wk_ray_shooter_clear(&R, &sh);
     wk_polygon_free(&R, P);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* ------------------------------------------------------------ crossings */
@@ -356,7 +335,7 @@ Test(arrangement, crossing_count_matches_brute_force) {
                     WK_FREE_ARRAY(&R, S, r);
                     wk_polygon_free(&R, P);
                 }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(arrangement, crossing_family_count) {
@@ -381,7 +360,7 @@ Test(arrangement, crossing_family_count) {
             WK_FREE_ARRAY(&R, S, rr);
             wk_polygon_free(&R, P);
         }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* Segments crossing at exact, repeated points and along the grid's walls:
@@ -417,7 +396,7 @@ Test(arrangement, crossing_count_degenerate_layouts) {
         cr_assert_eq(wk_arrangement_count_crossings(&R, S, M, &K), WK_OK);
         cr_assert_eq(K, brute_crossings(S, M), "layout %d", layout);
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(arrangement, thread_count_does_not_change_anything) {
@@ -462,7 +441,7 @@ Test(arrangement, thread_count_does_not_change_anything) {
         WK_FREE_ARRAY(&R, ref, rref);
         wk_polygon_free(&R, P);
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* ------------------------------------------------------------ queries */
@@ -577,7 +556,7 @@ Test(arrangement, next_crossings_match_brute_force) {
     WK_FREE_ARRAY(&R, all, A.n_live);
     WK_FREE_ARRAY(&R, out, A.n_live);
     wk_arrangement_clear(&R, &A);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* A horizontal segment H = id 0 from (0,0) to (10,0) and five verticals
@@ -652,7 +631,7 @@ Test(arrangement, cache_hits_misses_refills_scripted) {
                   (unsigned long long)got.refill, (unsigned long long)got.inval);
         wk_arrangement_clear(&R, &A);
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(arrangement, cache_memory_grows_with_k) {
@@ -677,7 +656,7 @@ Test(arrangement, cache_memory_grows_with_k) {
     }
     cr_assert_lt(peak[0], peak[1]);
     cr_assert_lt(peak[1], peak[2]);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(arrangement, invalidation_on_insert_remove_and_active_parts) {
@@ -763,7 +742,7 @@ Test(arrangement, invalidation_on_insert_remove_and_active_parts) {
     cr_assert(wk_arrangement_check(&A));
     cr_assert_eq(wk_arrangement_cache_next(&R, &A, 0, 0, &c), WK_EALGO);
     wk_arrangement_clear(&R, &A);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* Random operation sequences: every cache answer equals the next crossing
@@ -837,7 +816,7 @@ Test(arrangement, cache_agrees_with_scans_under_random_updates) {
         cr_assert_gt(counter(&R, "cache_invalidations"), 0);
         wk_arrangement_clear(&R, &A);
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* ------------------------------------------------------------ faults */
@@ -897,7 +876,7 @@ Test(arrangement, every_allocation_failure_is_clean) {
     }
     cr_assert_gt(failures, 10);
     wk_polygon_free(&R, P);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* ------------------------------------------------------------ timings */
@@ -907,12 +886,6 @@ Test(arrangement, every_allocation_failure_is_clean) {
 **   WSKEL_ARR_TIMING=1 build/tests/run_tests --filter 'arrangement/timings' --jobs 1
 ** Shooting and counting on star (seed 1) and crossing polygons with 1 and 2
 ** threads (best of 3), then the cost of next-crossing scans. */
-static double now_s(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 Test(arrangement, timings, .timeout = 600) {
     if (!getenv("WSKEL_ARR_TIMING")) return;
     wk_run R;
@@ -978,5 +951,5 @@ Test(arrangement, timings, .timeout = 600) {
     }
     WK_FREE_ARRAY(&R, out, A.n_live);
     wk_arrangement_clear(&R, &A);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }

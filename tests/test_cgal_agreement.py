@@ -35,19 +35,14 @@ import concurrent.futures
 import math
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
 import unittest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import compare_skeletons as cs  # noqa: E402
-
-WSKEL = os.environ.get("WSKEL_BIN", os.path.join(ROOT, "bin", "wskel"))
-WSKEL_GEN = os.environ.get("WSKEL_GEN_BIN", os.path.join(ROOT, "bin", "wskel-gen"))
-WSKEL_CGAL = os.environ.get("WSKEL_CGAL_BIN", os.path.join(ROOT, "bin", "wskel-cgal"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import testlib as tl  # noqa: E402
+from testlib import WSKEL, WSKEL_CGAL, WSKEL_GEN, cs, need, run  # noqa: E402
 
 FAMILIES = ["star", "comb", "spiral", "notched", "crossing", "random", "monotone",
             "rectilinear", "convex"]
@@ -55,47 +50,9 @@ SIZES = [8, 20, 50, 200, 500]
 SEEDS = int(os.environ.get("WSKEL_CGAL_SEEDS", "10"))
 BUDGET = float(os.environ.get("WSKEL_CGAL_BUDGET", "120"))
 JOBS = max(1, int(os.environ.get("WSKEL_CGAL_JOBS", "2")))
-TIMEOUT = 120  # seconds for one program run; a hang is a failure, not a wait
-
-
-def have(path):
-    return os.path.isfile(path) and os.access(path, os.X_OK)
-
-
-def need(*paths):
-    """Skip the calling test unless every binary exists."""
-    missing = [os.path.relpath(p, ROOT) for p in paths if not have(p)]
-    if missing:
-        raise unittest.SkipTest("not built yet: %s (run make)" % ", ".join(missing))
 
 
 # ------------------------------------------------------------- polygons
-
-def write_wpoly(path, pts, comment=None):
-    with open(path, "w") as f:
-        if comment:
-            f.write("# %s\n" % comment)
-        f.write("%d\n" % len(pts))
-        for x, y in pts:
-            f.write("%.17g %.17g\n" % (x, y))
-
-
-def read_wpoly(path):
-    """(points, weights) of a .wpoly file; weights default to 1."""
-    pts, ws, n = [], [], None
-    with open(path) as f:
-        for line in f:
-            s = line.strip()
-            if not s or s.startswith("#"):
-                continue
-            if n is None:
-                n = int(s)
-                continue
-            v = [float(c) for c in s.split()]
-            pts.append((v[0], v[1]))
-            ws.append(v[2] if len(v) > 2 else 1.0)
-    return pts, ws
-
 
 def regular(k, r=1.0):
     return [(r * math.cos(2 * math.pi * i / k), r * math.sin(2 * math.pi * i / k))
@@ -138,15 +95,6 @@ def hand_made():
 
 # ------------------------------------------------------------ running
 
-def run(cmd):
-    try:
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                           timeout=TIMEOUT, universal_newlines=True)
-        return p.returncode, p.stdout, p.stderr
-    except subprocess.TimeoutExpired:
-        return None, "", "timed out after %d s" % TIMEOUT
-
-
 class Outcome:
     """One polygon's verdict: 'same', 'differ' (a test failure) or 'skip'
     (the comparison could not be made for a reason that is not wskel's
@@ -181,23 +129,23 @@ def agree(name, wpoly, work):
     return Outcome(name, "differ", why, wpoly)
 
 
-def report_failures(test, outcomes):
-    """Fail test with every disagreement, keeping the inputs for replay."""
-    bad = [o for o in outcomes if o.verdict == "differ"]
-    if not bad:
-        return
-    keep = tempfile.mkdtemp(prefix="wskel-cgal-fail-")
-    for o in bad:
-        if o.path and os.path.exists(o.path):
-            shutil.copy(o.path, keep)
-    lines = ["%d polygon(s) disagree with CGAL; inputs kept in %s" % (len(bad), keep)]
-    for o in bad[:10]:
-        lines.append("  %s: %s" % (o.name, o.why))
-    if len(bad) > 10:
-        lines.append("  ... %d more" % (len(bad) - 10))
-    lines.append("replay: bin/wskel --variant naive -o A.json IN; bin/wskel-cgal -o B.json IN; "
-                 "scripts/compare_skeletons.py --verbose A.json B.json")
-    test.fail("\n".join(lines))
+REPLAY = ("replay: bin/wskel --variant naive -o A.json IN; bin/wskel-cgal -o B.json IN; "
+          "scripts/compare_skeletons.py --verbose A.json B.json")
+# Verdicts that are neither agreement nor disagreement, as the summary names them.
+NOT_COMPARED = {"skip": "skipped", "nogen": "not generated",
+                "not run": "not run (time budget; WSKEL_CGAL_BUDGET=0 runs all)"}
+
+
+def report(test, what, outcomes, detail=""):
+    """One summary line on stderr; fail test with every disagreement, keeping
+    the inputs for replay."""
+    t = tl.Tally(what)
+    for o in outcomes:
+        if o.verdict in NOT_COMPARED:
+            t.skip("%s%s" % (o.name, ": " + o.why if o.why else ""), NOT_COMPARED[o.verdict])
+        else:
+            t.case([] if o.verdict == "same" else ["%s: %s" % (o.name, o.why)], o.path)
+    t.report(test, detail, limit=10, hint=REPLAY)
 
 
 # -------------------------------------------------- face bookkeeping
@@ -393,7 +341,7 @@ class TestCgalBaseline(unittest.TestCase):
     def cgal(self, name, pts):
         src = os.path.join(self.tmp, name + ".wpoly")
         out = os.path.join(self.tmp, name + ".json")
-        write_wpoly(src, pts)
+        tl.write_wpoly(src, pts)
         rc, _, err = run([WSKEL_CGAL, "-o", out, src])
         self.assertEqual(rc, 0, "%s: %s" % (name, err))
         self.assertFalse(os.path.exists(out + ".tmp"))
@@ -458,7 +406,7 @@ class TestCgalBaseline(unittest.TestCase):
 
     def test_bad_input_and_usage(self):
         src = os.path.join(self.tmp, "bowtie.wpoly")
-        write_wpoly(src, [(0, 0), (1, 1), (1, 0), (0, 1)])
+        tl.write_wpoly(src, [(0, 0), (1, 1), (1, 0), (0, 1)])
         self.assertEqual(run([WSKEL_CGAL, src])[0], 1)
         src = os.path.join(self.tmp, "short.wpoly")
         with open(src, "w") as f:
@@ -484,16 +432,9 @@ class TestHandMade(unittest.TestCase):
             outcomes = []
             for name, pts in sorted(hand_made().items()):
                 path = os.path.join(work, name + ".wpoly")
-                write_wpoly(path, pts, "hand-made %s, unit weights" % name)
+                tl.write_wpoly(path, pts, comment="hand-made %s, unit weights" % name)
                 outcomes.append(agree(name, path, work))
-            same = sum(o.verdict == "same" for o in outcomes)
-            compared = sum(o.verdict != "skip" for o in outcomes)
-            skipped = [o for o in outcomes if o.verdict == "skip"]
-            print("CGAL agreement: %d/%d polygons identical (hand-made%s)"
-                  % (same, compared, "; %d skipped: %s" % (
-                      len(skipped), "; ".join("%s: %s" % (o.name, o.why) for o in skipped))
-                      if skipped else ""), file=sys.stderr)
-            report_failures(self, outcomes)
+            report(self, "CGAL agreement, hand-made", outcomes)
         finally:
             shutil.rmtree(work, ignore_errors=True)
 
@@ -513,7 +454,7 @@ def generate(family, n, seed, path):
             with open(path, "w") as f:
                 f.write(out)
         try:
-            pts, ws = read_wpoly(path)
+            pts, ws = tl.read_wpoly(path)
         except (OSError, ValueError) as e:
             return "cannot read wskel-gen output: %s" % e
         if all(w == 1.0 for w in ws):
@@ -561,20 +502,8 @@ class TestGenerated(unittest.TestCase):
             if len(nogen) == len(outcomes):
                 raise unittest.SkipTest("wskel-gen cannot make family %s: %s"
                                         % (fam, nogen[0].why))
-            same = sum(o.verdict == "same" for o in outcomes)
-            compared = sum(o.verdict in ("same", "differ") for o in outcomes)
-            notes = []
-            for verdict, what in (("not run", "not run (time budget; WSKEL_CGAL_BUDGET=0 "
-                                              "runs all)"),
-                                  ("nogen", "not generated"), ("skip", "skipped")):
-                k = [o for o in outcomes if o.verdict == verdict]
-                if k:
-                    notes.append("%d %s%s" % (len(k), what, (": " + k[0].name + ": " + k[0].why)
-                                              if k[0].why else ""))
-            print("CGAL agreement: %d/%d polygons identical (family %s, n in %s, %d seeds%s)"
-                  % (same, compared, fam, SIZES, SEEDS,
-                     "; " + "; ".join(notes) if notes else ""), file=sys.stderr)
-            report_failures(self, outcomes)
+            report(self, "CGAL agreement, family %s" % fam, outcomes,
+                   "n in %s, %d seeds" % (SIZES, SEEDS))
         finally:
             shutil.rmtree(work, ignore_errors=True)
 

@@ -24,20 +24,18 @@ arcs.  Cases: the files in tests/data/degenerate, then WSKEL_DEGENERATE_CASES
 rectilinear "double histograms"; unit, tied (1 or 2) or integer (1..5)
 weights.  The generator is seeded per case, so a failure names the case.
 """
-import json
 import math
 import os
 import random
-import subprocess
+import shutil
 import sys
 import tempfile
 import unittest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import compare_skeletons as cs  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import testlib as tl  # noqa: E402
+from testlib import cs  # noqa: E402
 
-WSKEL = os.environ.get("WSKEL_BIN", os.path.join(ROOT, "bin", "wskel"))
 CASES = int(os.environ.get("WSKEL_DEGENERATE_CASES", "2000"))
 REAL_CASES = int(os.environ.get("WSKEL_REAL_CASES", "24"))
 MONO_CASES = int(os.environ.get("WSKEL_MONO_CASES", "400"))
@@ -47,7 +45,7 @@ MONO_CASES = int(os.environ.get("WSKEL_MONO_CASES", "400"))
 # wavefront vertex", walls at equal levels 1e5 from the origin) was fixed by
 # collapsing flat cycles and is kept as tests/data/degenerate/flat_cycle_far.wpoly.
 KNOWN_FAILURES = {}
-DATA = os.path.join(ROOT, "tests", "data", "degenerate")
+DATA = os.path.join(tl.DATA, "degenerate")
 VARIANTS = [["arrangement", "--k", "1"], ["arrangement", "--k", "max"], ["monotone"]]
 
 
@@ -197,20 +195,16 @@ def monotone_any_direction(seed):
 class Degenerate(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        if not os.access(WSKEL, os.X_OK):
-            raise unittest.SkipTest("bin/wskel not built (run make)")
+        tl.need(tl.WSKEL)
         cls.work = tempfile.mkdtemp(prefix="wskel-degenerate-")
 
     @classmethod
     def tearDownClass(cls):
-        for f in os.listdir(cls.work):
-            os.unlink(os.path.join(cls.work, f))
-        os.rmdir(cls.work)
+        shutil.rmtree(cls.work, ignore_errors=True)
 
     def run_variant(self, args, poly, out):
-        r = subprocess.run([WSKEL, "--check", "-o", out] + args + [poly], capture_output=True,
-                           text=True, timeout=120)
-        return r.returncode, r.stderr.strip()
+        rc, _, err = tl.wskel(["--check", "-o", out] + args + [poly])
+        return rc, err.strip()
 
     def check_case(self, name, poly, monotone_required=False):
         """Returns a list of failure lines (empty: all agree)."""
@@ -238,62 +232,56 @@ class Degenerate(unittest.TestCase):
     def test_files(self):
         names = sorted(f for f in os.listdir(DATA) if f.endswith(".wpoly"))
         self.assertGreaterEqual(len(names), 4)
-        fails = []
+        t = tl.Tally("degenerate files")
         for f in names:
-            fails += self.check_case(f, os.path.join(DATA, f))
-        self.assertEqual(fails, [], "\n".join(fails))
+            path = os.path.join(DATA, f)
+            t.case(self.check_case(f, path), path)
+        t.report(self, limit=len(names))
+
+    def write(self, pts, w, comment=None):
+        return tl.write_wpoly(os.path.join(self.work, "case.wpoly"), pts, w, comment)
 
     def test_generated(self):
-        fails, cases = [], 0
+        t = tl.Tally("degenerate generated")
         for seed in range(1, CASES + 1):
             case = generated(seed)
             if case is None:
+                t.skip("case %d" % seed, "degenerated away")
                 continue
             pts, w = case
-            path = os.path.join(self.work, "case.wpoly")
-            with open(path, "w") as f:
-                f.write("# test_degenerate.py case %d\n%d\n" % (seed, len(pts)))
-                for (x, y), ww in zip(pts, w):
-                    f.write("%d %d %d\n" % (x, y, ww))
-            cases += 1
-            fails += self.check_case("case %d" % seed, path)
-        print("degenerate: %d generated cases, %d failures" % (cases, len(fails)),
-              file=sys.stderr)
-        self.assertEqual(fails, [], "\n".join(fails[:20]))
-
-    def write(self, pts, w):
-        path = os.path.join(self.work, "case.wpoly")
-        with open(path, "w") as f:
-            f.write("%d\n" % len(pts))
-            for (x, y), ww in zip(pts, w):
-                f.write("%r %r %r\n" % (float(x), float(y), float(ww)))
-        return path
+            path = self.write(pts, w, "test_degenerate.py case %d" % seed)
+            t.case(self.check_case("case %d" % seed, path), path)
+        t.report(self)
 
     def test_real_like(self):
         """Coastlines, glyph outlines, a far-off tiny polygon: every variant
         equals naive (the validator once rejected naive's skeleton of the
         far-off one)."""
-        fails = []
+        t = tl.Tally("degenerate real-like")
         for seed in range(REAL_CASES):
             name, pts, w = real_like(seed)
-            fails += self.check_case(name, self.write(pts, w))
-        self.assertEqual(fails, [], "\n".join(fails[:20]))
+            path = self.write(pts, w, name)
+            t.case(self.check_case(name, path), path)
+        t.report(self)
 
     def test_monotone_any_direction(self):
         """Monotone by construction, so the monotone variant must not refuse;
         nearly flat reflex vertices once made it do so, and naive failed on
         nearly collinear edges of different weight."""
-        fails = []
+        t = tl.Tally("degenerate monotone in any direction")
         for seed in range(1, MONO_CASES + 1):
             name, pts, w = monotone_any_direction(seed)
-            got = self.check_case(name, self.write(pts, w), monotone_required=True)
+            path = self.write(pts, w, name)
+            got = self.check_case(name, path, monotone_required=True)
             if seed in KNOWN_FAILURES:
                 if not got or not all(KNOWN_FAILURES[seed] in g for g in got):
-                    fails.append("%s: known failure '%s' changed: %s" %
-                                 (name, KNOWN_FAILURES[seed], got or "now passes"))
-                continue
-            fails += got
-        self.assertEqual(fails, [], "\n".join(fails[:20]))
+                    got = ["%s: known failure '%s' changed: %s" %
+                           (name, KNOWN_FAILURES[seed], got or "now passes")]
+                else:
+                    t.skip(name, "known failures")
+                    continue
+            t.case(got, path)
+        t.report(self)
 
 
 if __name__ == "__main__":

@@ -7,7 +7,7 @@
 #include <criterion/criterion.h>
 
 #include "event_queue.h"
-#include "fixtures.h"
+#include "helpers.h"
 
 static uint64_t rng(uint64_t *s) {
     *s = *s * 6364136223846793005ull + 1442695040888963407ull;
@@ -57,7 +57,7 @@ Test(event_queue, matches_brute_force_model) {
     cr_assert_gt(counter(&R, "queue_removes"), 0);
     cr_assert_gt(counter(&R, "queue_pops"), 0);
     wk_event_queue_clear(&R, &Q);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(event_queue, reserve_failure_leaves_queue_intact) {
@@ -73,5 +73,5 @@ Test(event_queue, reserve_failure_leaves_queue_intact) {
     cr_assert_eq(Q.size, 16);
     cr_assert_eq(wk_event_queue_pop(&R, &Q), 15); /* time 1 */
     wk_event_queue_clear(&R, &Q);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }

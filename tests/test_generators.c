@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "generators.h"
+#include "helpers.h"
 
 static const uint32_t sizes[] = {8, 9, 10, 11, 13, 16, 31, 64, 100, 257, 500, 1000, 2000};
 #define N_SIZES (sizeof sizes / sizeof sizes[0])
@@ -36,18 +37,6 @@ static int64_t expected_r(const char *f, uint32_t n, int64_t r) {
 
 static bool family_takes(const char *f, uint32_t n) {
     return strcmp(f, "rectilinear") != 0 || n % 2 == 0;
-}
-
-static wk_status gen(wk_run *R, const char *family, uint32_t n, int64_t r, uint64_t seed,
-                     const char *weights, wk_polygon **P) {
-    wk_gen_params g;
-    wk_gen_params_init(&g);
-    g.family = family;
-    g.n = n;
-    g.r = r;
-    g.seed = seed;
-    if (weights && wk_gen_parse_weights(R, weights, &g) != WK_OK) return R->err.code;
-    return wk_generate(R, &g, P);
 }
 
 /* Independent simplicity oracle, O(n^2): adjacent edges share only their
@@ -116,7 +105,7 @@ Test(generators, every_family_spread) {
             wk_polygon_free(&R, prev);
         }
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* The families that take --r, at the edges of their ranges. */
@@ -146,7 +135,7 @@ Test(generators, chosen_r) {
             }
         }
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(generators, deterministic_per_seed) {
@@ -168,7 +157,7 @@ Test(generators, deterministic_per_seed) {
             wk_polygon_free(&R, C);
         }
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(generators, weights_in_range_and_geometry_unmoved) {
@@ -216,7 +205,7 @@ Test(generators, weights_in_range_and_geometry_unmoved) {
         }
         wk_polygon_free(&R, U);
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(generators, weight_mode_parsing) {
@@ -232,7 +221,7 @@ Test(generators, weight_mode_parsing) {
         wk_gen_params_init(&g);
         cr_assert_eq(wk_gen_parse_weights(&Q, bad[i], &g), WK_EUSAGE, "'%s' accepted", bad[i]);
         cr_assert_eq(g.weights, WK_W_UNIT, "'%s' changed g", bad[i]);
-        cr_assert_eq(wk_run_close(&Q), 0);
+        ASSERT_CLEAN_CLOSE(Q);
     }
     static const char *const good[] = {"unit", "uniform", "uniform:0.1:0.1", "two:1:3",
                                        "int:1:4", "uniform:0.3:1e3"};
@@ -248,7 +237,7 @@ Test(generators, weight_mode_parsing) {
         cr_assert(g.weights == h.weights && g.wa == h.wa && g.wb == h.wb, "'%s' -> '%s'",
                   good[i], buf);
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(generators, impossible_parameters) {
@@ -286,7 +275,7 @@ Test(generators, impossible_parameters) {
         cr_assert_null(P);
         cr_assert(strstr(R.err.msg, cases[i].msg), "case %zu: message '%s' lacks '%s'", i,
                   R.err.msg, cases[i].msg);
-        cr_assert_eq(wk_run_close(&R), 0);
+        ASSERT_CLEAN_CLOSE(R);
     }
 }
 
@@ -356,7 +345,7 @@ Test(generators, crossing_family_ray_crossings) {
                 wk_polygon_free(&R, P);
             }
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* ---- shape promises of the structured families ---- */
@@ -382,7 +371,7 @@ Test(generators, orthogonal_families_on_integers) {
         }
         wk_polygon_free(&R, P);
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(generators, monotone_is_x_monotone) {
@@ -406,7 +395,7 @@ Test(generators, monotone_is_x_monotone) {
             cr_assert_eq(changes, 2, "monotone n=%u r=%lld: not x-monotone", n, (long long)r);
             wk_polygon_free(&R, P);
         }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* ---- failure paths and size ---- */
@@ -431,7 +420,7 @@ Test(generators, allocation_failures_are_clean) {
             if (st == WK_OK) {
                 check_polygon(cases[c].family, cases[c].n, cases[c].r, 3, P);
                 wk_polygon_free(&R, P);
-                cr_assert_eq(wk_run_close(&R), 0);
+                ASSERT_CLEAN_CLOSE(R);
                 break;
             }
             cr_assert_eq(st, WK_ENOMEM, "%s k=%lld: %s", cases[c].family, (long long)k,
@@ -457,5 +446,5 @@ Test(generators, large_n_smoke) {
     cr_assert_eq(gen(&R, "star", 100000, 50000, 1, NULL, &P), WK_OK, "%s", R.err.msg);
     cr_assert_eq(P->r, 50000);
     wk_polygon_free(&R, P);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }

@@ -19,29 +19,13 @@
 #include <string.h>
 
 #include "wskel.h"
-#include "fixtures.h"
-
-static const double PI = 3.14159265358979323846;
-
-/* tests/data, found next to this source file so the binary can run from the
-** repository root (make) or from anywhere when compiled with a full path. */
-static void data_path(char *buf, size_t size, const char *rel) {
-    const char *f = __FILE__;
-    const char *slash = strrchr(f, '/');
-    if (slash)
-        snprintf(buf, size, "%.*s/data/%s", (int)(slash - f), f, rel);
-    else
-        snprintf(buf, size, "data/%s", rel);
-}
+#include "helpers.h"
 
 static wk_status read_data(wk_run *R, const char *rel, wk_polygon **P) {
     char path[512];
     data_path(path, sizeof path, rel);
     return wk_polygon_read_file(R, path, P);
 }
-
-static void error_text(const wk_run *R, char *buf, size_t size) { wk_error_format(R, buf, size); }
-
 
 /* Builds from arrays and expects WK_EINPUT with `want` in the formatted
 ** message. */
@@ -52,21 +36,11 @@ static void expect_reject(uint32_t n, const double *x, const double *y, const do
     wk_polygon *P = NULL;
     wk_status st = wk_polygon_from_arrays(&R, n, x, y, w, "t.wpoly", lines, &P);
     char msg[1024];
-    error_text(&R, msg, sizeof msg);
+    err_text(&R, msg, sizeof msg);
     cr_assert_eq(st, WK_EINPUT, "expected rejection '%s', got status %d", want, st);
     cr_assert_null(P);
     cr_assert(strstr(msg, want), "message '%s' lacks '%s'", msg, want);
     ASSERT_CLEAN_CLOSE(R);
-}
-
-static wk_polygon *build(wk_run *R, uint32_t n, const double *x, const double *y,
-                         const double *w) {
-    wk_polygon *P = NULL;
-    wk_status st = wk_polygon_from_arrays(R, n, x, y, w, "t", NULL, &P);
-    char msg[1024];
-    error_text(R, msg, sizeof msg);
-    cr_assert_eq(st, WK_OK, "%s", msg);
-    return P;
 }
 
 /* ---- good files ---- */
@@ -367,7 +341,7 @@ Test(polygon, bad_corpus_matches_expected) {
         char rel[256], msg[1024];
         snprintf(rel, sizeof rel, "bad/%.200s", name);
         wk_status st = read_data(&R, rel, &P);
-        error_text(&R, msg, sizeof msg);
+        err_text(&R, msg, sizeof msg);
         cr_assert_neq(st, WK_OK, "%s was accepted", name);
         cr_assert_null(P);
         cr_assert_eq(wk_status_exit_code(st), atoi(code), "%s: exit code %d, want %s", name,
@@ -397,7 +371,7 @@ Test(polygon, missing_file) {
     wk_polygon *P = NULL;
     wk_status st = wk_polygon_read_file(&R, "/nonexistent/dir/x.wpoly", &P);
     char msg[1024];
-    error_text(&R, msg, sizeof msg);
+    err_text(&R, msg, sizeof msg);
     cr_assert_eq(st, WK_EINPUT);
     cr_assert_null(P);
     cr_assert(strstr(msg, "/nonexistent/dir/x.wpoly: cannot open: No such file"), "%s", msg);
@@ -519,7 +493,7 @@ Test(polygon, accept_near_degenerate_valid) {
     wk_run_init(&R);
     const double u = 0x1p-52;
     const double x[5] = {0, 1, 0.5, 0.5, -1}, y[5] = {0, 1, 0.5 + u, 2, 2};
-    wk_polygon *P = build(&R, 5, x, y, NULL);
+    wk_polygon *P = polygon(&R, 5, x, y, NULL);
     cr_assert_eq(P->n, 5);
     cr_assert(wk_polygon_is_reflex(P, 2));
     wk_polygon_free(&R, P);
@@ -532,7 +506,7 @@ Test(polygon, accept_collinear_disjoint_edges) {
     wk_run R;
     wk_run_init(&R);
     const double x[8] = {0, 2, 2, 0, 0, -2, -2, 0}, y[8] = {0, 0, 4, 4, 3, 3, 1, 1};
-    wk_polygon *P = build(&R, 8, x, y, NULL);
+    wk_polygon *P = polygon(&R, 8, x, y, NULL);
     cr_assert_eq(P->r, 2);
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
@@ -546,17 +520,17 @@ Test(polygon, reflex_counts_of_known_shapes) {
     wk_polygon *P;
     /* Square, ccw and cw. */
     const double sx[4] = {0, 1, 1, 0}, sy[4] = {0, 0, 1, 1};
-    P = build(&R, 4, sx, sy, NULL);
+    P = polygon(&R, 4, sx, sy, NULL);
     cr_assert_eq(P->r, 0);
     wk_polygon_free(&R, P);
     const double cx[4] = {0, 0, 1, 1}, cy[4] = {0, 1, 1, 0};
-    P = build(&R, 4, cx, cy, NULL);
+    P = polygon(&R, 4, cx, cy, NULL);
     cr_assert_eq(P->r, 0);
     cr_assert(P->reversed);
     wk_polygon_free(&R, P);
     /* Straight-on vertices (180 degrees) are valid and not reflex. */
     const double tx[6] = {0, 1, 2, 2, 1, 0}, ty[6] = {0, 0, 0, 1, 1, 1};
-    P = build(&R, 6, tx, ty, NULL);
+    P = polygon(&R, 6, tx, ty, NULL);
     cr_assert_eq(P->r, 0);
     cr_assert_not(wk_polygon_is_reflex(P, 1));
     cr_assert_not(wk_polygon_is_reflex(P, 4));
@@ -573,7 +547,7 @@ Test(polygon, reflex_counts_of_known_shapes) {
             x[n] = 2 * t, y[n++] = 3;
             if (t > 0) x[n] = 2 * t, y[n++] = 1, x[n] = 2 * t - 1, y[n++] = 1;
         }
-        P = build(&R, n, x, y, NULL);
+        P = polygon(&R, n, x, y, NULL);
         cr_assert_eq(P->r, 2 * (k - 1), "comb %u: r = %u", k, P->r);
         cr_assert_not(P->reversed);
         wk_polygon_free(&R, P);
@@ -586,11 +560,11 @@ Test(polygon, reflex_counts_of_known_shapes) {
             x[i] = rad * cos(a);
             y[i] = rad * sin(a);
         }
-        P = build(&R, 2 * k, x, y, NULL);
+        P = polygon(&R, 2 * k, x, y, NULL);
         cr_assert_eq(P->r, k);
         wk_polygon_free(&R, P);
         for (uint32_t i = 0; i < 2 * k; i++) y[i] = -y[i]; /* mirrored: clockwise */
-        P = build(&R, 2 * k, x, y, NULL);
+        P = polygon(&R, 2 * k, x, y, NULL);
         cr_assert(P->reversed);
         cr_assert_eq(P->r, k);
         wk_polygon_free(&R, P);
@@ -651,7 +625,7 @@ Test(polygon, sweep_agrees_with_brute_force) {
         wk_polygon *P = NULL;
         wk_status st = wk_polygon_from_arrays(&R, n, x, y, NULL, "r", NULL, &P);
         char msg[1024];
-        error_text(&R, msg, sizeof msg);
+        err_text(&R, msg, sizeof msg);
         cr_assert_eq(st == WK_OK, want, "trial %d (n=%u): sweep %s (%s), brute force %s", trial,
                      n, st == WK_OK ? "accepts" : "rejects", msg, want ? "accepts" : "rejects");
         if (st == WK_OK) {
@@ -683,7 +657,7 @@ Test(polygon, million_vertex_star_validates) {
     double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
     cr_assert(x && y);
     star(n, x, y);
-    wk_polygon *P = build(&R, n, x, y, NULL);
+    wk_polygon *P = polygon(&R, n, x, y, NULL);
     cr_assert_eq(P->r, n / 2);
     wk_polygon_free(&R, P);
     /* One outer vertex thrown across the centre, twice as far out: its two
@@ -693,7 +667,7 @@ Test(polygon, million_vertex_star_validates) {
     y[k] = -2 * y[k];
     wk_status st = wk_polygon_from_arrays(&R, n, x, y, NULL, "big", NULL, &P);
     char msg[1024];
-    error_text(&R, msg, sizeof msg);
+    err_text(&R, msg, sizeof msg);
     cr_assert_eq(st, WK_EINPUT);
     cr_assert(strstr(msg, "crosses") || strstr(msg, "touches"), "%s", msg);
     free(x);

@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "wskel.h"
+#include "helpers.h"
 
 /* ---- reference ---- */
 
@@ -77,7 +78,7 @@ Test(predicates, obvious_cases_need_no_exact_stage) {
     cr_assert_eq(wk_orient2d(o, x, y, NULL), 1, "exact_used may be NULL");
     cr_assert_eq(wk_orient2d_fast(o, x, y), 1);
     cr_assert_eq(wk_orient2d_fast(o, y, x), -1);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* Shewchuk's demonstration: points (0.5 + i u, 0.5 + j u), u = 2^-53, tested
@@ -105,7 +106,7 @@ Test(predicates, shewchuk_grid_matches_gmp) {
     cr_assert_gt(exact_runs, 0);
     cr_assert(zero > 0 && pos > 0 && neg > 0, "all three answers occur (%d %d %d)", zero, pos,
               neg);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* Exact differences, products that round to the same double:
@@ -125,7 +126,7 @@ Test(predicates, product_cancellation) {
     /* The same with inexact differences: shift everything by 0.25. */
     wk_point a2 = {a.x + 0.25, a.y}, b2 = {b.x + 0.25, b.y}, c2 = {0.25, 0};
     cr_assert_eq(wk_orient2d(a2, b2, c2, NULL), ref_orient(a2, b2, c2));
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* Random points on random lines, rounded: mostly near-collinear. */
@@ -159,7 +160,7 @@ Test(predicates, random_near_collinear_matches_gmp) {
     }
     cr_assert_gt(exact_runs, 1000);
     cr_assert_gt(wrong_fast, 100, "only %d fast failures: the cases are not hard", wrong_fast);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(predicates, extreme_but_allowed_magnitudes) {
@@ -174,7 +175,7 @@ Test(predicates, extreme_but_allowed_magnitudes) {
         wk_point c = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
         cr_assert_eq(wk_orient2d(a, b, c, NULL), ref_orient(a, b, c), "case %d", k);
     }
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 /* ---- segments ---- */
@@ -213,7 +214,7 @@ Test(predicates, segment_cases) {
         cr_assert_eq(wk_segments_meet(c, d, m, P(0.3, 5)), want, "k=%d side=%d", k, side);
     }
 #undef P
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }
 
 Test(predicates, random_segments_match_gmp) {
@@ -242,5 +243,5 @@ Test(predicates, random_segments_match_gmp) {
         cr_assert_eq(wk_segments_meet(p[2], p[3], p[0], p[1]), m, "symmetric");
     }
     cr_assert(hits > 1000 && hits < 49000, "a mix of answers (%d)", hits);
-    cr_assert_eq(wk_run_close(&R), 0);
+    ASSERT_CLEAN_CLOSE(R);
 }

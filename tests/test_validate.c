@@ -20,12 +20,7 @@
 
 #include "faces.h"
 #include "wskel.h"
-#include "fixtures.h"
-
-
-static const double PI = 3.14159265358979323846;
-
-
+#include "helpers.h"
 
 static void expect_valid(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                          wk_validate_report *rep) {
@@ -49,20 +44,12 @@ static void expect_invalid(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
 
 /* ---------------------------------------------------------- the shapes */
 
-static const double SQ_X[4] = {0, 1, 1, 0}, SQ_Y[4] = {0, 0, 1, 1};
-static const wk_node SQ_NODES[1] = {{0.5, 0.5, 0.5}};
-static const arc4 SQ_ARCS[4] = {{0, 4, 3, 0}, {1, 4, 0, 1}, {2, 4, 1, 2}, {3, 4, 2, 3}};
+/* The unit square (SQ_*) and the L shape (L_*) are in helpers.h. */
 
 static const double RECT_X[4] = {0, 2, 2, 0}, RECT_Y[4] = {0, 0, 1, 1};
 static const wk_node RECT_NODES[2] = {{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}};
 static const arc4 RECT_ARCS[5] = {
     {0, 4, 3, 0}, {3, 4, 2, 3}, {1, 5, 0, 1}, {2, 5, 1, 2}, {4, 5, 2, 0}};
-
-/* L shape: the horizontal arm [0,2]x[0,1], the vertical arm [0,1]x[0,2]; vertex 3 is reflex. */
-static const double L_X[6] = {0, 2, 2, 1, 1, 0}, L_Y[6] = {0, 0, 1, 1, 2, 2};
-static const wk_node L_NODES[3] = {{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}, {0.5, 1.5, 0.5}};
-static const arc4 L_ARCS[8] = {{0, 6, 5, 0}, {1, 7, 0, 1}, {2, 7, 1, 2}, {3, 6, 2, 3},
-                               {4, 8, 3, 4}, {5, 8, 4, 5}, {6, 7, 2, 0}, {6, 8, 5, 3}};
 
 /* ---------------------------------------------------------- accepted */
 
@@ -545,12 +532,6 @@ Test(validate, out_of_memory_at_every_allocation) {
 
 /* ---------------------------------------------------------- large */
 
-static double seconds(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* Regular n-gon, n = 10^5: every spoke (vertex -> centre) split at its
 ** midpoint, so 2n arcs, n + 1 interior nodes for (b), and n triangular
 ** faces with 5 sides; all arcs meet at the centre. */
@@ -575,10 +556,10 @@ Test(validate, regular_polygon_1e5_spokes, .timeout = 60) {
         cr_assert_eq(wk_skeleton_add_arc(&R, S, i, mid, prev, i), WK_OK);
         cr_assert_eq(wk_skeleton_add_arc(&R, S, mid, centre, prev, i), WK_OK);
     }
-    double t0 = seconds();
+    double t0 = now_s();
     wk_validate_report rep;
     expect_valid(&R, P, S, &rep);
-    double dt = seconds() - t0;
+    double dt = now_s() - t0;
     cr_log_info("regular 1e5-gon, 2e5 arcs: validated in %.3f s (max distance error %.3g)", dt,
                 rep.max_distance_error);
     cr_assert_eq(rep.arcs, 2 * n);
@@ -614,9 +595,9 @@ Test(validate, long_ridge_1e5_arcs, .timeout = 60) {
     cr_assert_eq(wk_skeleton_add_arc(&R, S, 3, first, 2, 3), WK_OK);
     cr_assert_eq(wk_skeleton_add_arc(&R, S, 1, first + K, 0, 1), WK_OK);
     cr_assert_eq(wk_skeleton_add_arc(&R, S, 2, first + K, 1, 2), WK_OK);
-    double t0 = seconds();
+    double t0 = now_s();
     expect_valid(&R, P, S, NULL);
-    double dt = seconds() - t0;
+    double dt = now_s() - t0;
     cr_log_info("ridge of 1e5 arcs: validated in %.3f s", dt);
     cr_assert_lt(dt, 10.0);
     /* Swap two ridge nodes far apart: still a path on the ridge line, but it

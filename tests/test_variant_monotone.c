@@ -3,10 +3,11 @@
 **
 ** Oracles:
 **   - the naive variant: on every case the monotone skeleton must be the same
-**     skeleton (nodes of both merged when within tol, as
-**     scripts/compare_skeletons.py does: tol = 1e-7 * scale; zero-length arcs
-**     dropped; the arcs, with their face labels on the right sides, equal as
-**     multisets) and pass wk_validate;
+**     skeleton (same_skeleton of tests/helpers.h, merging: nodes of both
+**     merged when within tol in x and y and tol / max weight in t, as
+**     scripts/compare_skeletons.py does: tol = 1e-7 * scale; the input
+**     vertices the same; zero-length arcs dropped; the arcs, with their face
+**     labels on the right sides, equal as multisets) and pass wk_validate;
 **   - property sweep: generator families monotone, convex and rectilinear
 **     (the latter is x-monotone with walls perpendicular to the sweep: the
 **     non-strict case), n from 4 to 2000, ten seeds, unit and uniform
@@ -36,96 +37,7 @@
 
 #include "generators.h"
 #include "wskel.h"
-#include "fixtures.h"
-
-#define ASSERT_CLEAN_CLOSE(R) \
-    cr_assert_eq(wk_run_close(&(R)), 0, "leaked %zu bytes", (R).alloc.live)
-
-static const wk_variant *variant(const char *name) {
-    const wk_variant *V = wk_variant_find(name);
-    cr_assert_not_null(V, "variant %s is not registered", name);
-    return V;
-}
-
-static bool quick_mode(void) {
-    const char *q = getenv("WSKEL_TEST_QUICK");
-    return q && *q && strcmp(q, "0") != 0;
-}
-
-static void err_text(const wk_run *R, char *buf, size_t size) {
-    if (R->err.code == WK_OK) snprintf(buf, size, "(no error recorded)");
-    else wk_error_format(R, buf, size);
-}
-
-/* ------------------------------------------------------------ comparison */
-
-typedef struct cnode { double x, y; uint32_t id; } cnode;
-typedef struct carc { uint32_t u, v, l, r; } carc;
-
-static int cmp_cnode(const void *a, const void *b) {
-    const cnode *p = a, *q = b;
-    if (p->x != q->x) return p->x < q->x ? -1 : 1;
-    return p->id < q->id ? -1 : p->id > q->id;
-}
-static int cmp_carc(const void *a, const void *b) {
-    const carc *p = a, *q = b;
-    if (p->u != q->u) return p->u < q->u ? -1 : 1;
-    if (p->v != q->v) return p->v < q->v ? -1 : 1;
-    if (p->l != q->l) return p->l < q->l ? -1 : 1;
-    return p->r < q->r ? -1 : p->r > q->r;
-}
-static uint32_t uf(uint32_t *par, uint32_t x) {
-    while (par[x] != x) x = par[x] = par[par[x]];
-    return x;
-}
-
-/* Same skeleton?  Nodes of A and B within tol are merged (transitively);
-** arcs become (smaller class, larger class, left, right), zero-length ones
-** dropped; the two sorted lists must be equal.  Writes a reason to why. */
-static bool same_skeleton(const wk_skeleton *A, const wk_skeleton *B, double tol, char *why,
-                          size_t size) {
-    uint32_t na = A->n_nodes, nb = B->n_nodes, N = na + nb;
-    cnode *c = calloc(N, sizeof *c);
-    uint32_t *par = calloc(N, sizeof *par);
-    carc *aa = calloc(A->n_arcs + 1, sizeof *aa), *bb = calloc(B->n_arcs + 1, sizeof *bb);
-    cr_assert(c && par && aa && bb);
-    for (uint32_t i = 0; i < N; i++) {
-        const wk_node *q = i < na ? &A->nodes[i] : &B->nodes[i - na];
-        c[i] = (cnode){q->x, q->y, i};
-        par[i] = i;
-    }
-    qsort(c, N, sizeof *c, cmp_cnode);
-    for (uint32_t i = 0; i < N; i++)
-        for (uint32_t j = i + 1; j < N && c[j].x - c[i].x <= tol; j++)
-            if (fabs(c[j].y - c[i].y) <= tol) par[uf(par, c[i].id)] = uf(par, c[j].id);
-    uint32_t ka = 0, kb = 0;
-    for (int s = 0; s < 2; s++) {
-        const wk_skeleton *S = s ? B : A;
-        carc *out = s ? bb : aa;
-        uint32_t *k = s ? &kb : &ka, off = s ? na : 0;
-        for (uint32_t i = 0; i < S->n_arcs; i++) {
-            const wk_arc *x = &S->arcs[i];
-            uint32_t u = uf(par, x->a + off), v = uf(par, x->b + off);
-            if (u == v) continue;
-            out[(*k)++] = u < v ? (carc){u, v, x->left, x->right} : (carc){v, u, x->right, x->left};
-        }
-    }
-    qsort(aa, ka, sizeof *aa, cmp_carc);
-    qsort(bb, kb, sizeof *bb, cmp_carc);
-    bool ok = ka == kb;
-    if (!ok) snprintf(why, size, "%u arcs vs %u after merging", ka, kb);
-    for (uint32_t i = 0; ok && i < ka; i++)
-        if (cmp_carc(&aa[i], &bb[i]) != 0) {
-            ok = false;
-            snprintf(why, size, "arc %u: classes %u-%u faces %u|%u vs %u-%u faces %u|%u", i, aa[i].u,
-                     aa[i].v, aa[i].l, aa[i].r, bb[i].u, bb[i].v, bb[i].l, bb[i].r);
-        }
-    free(c);
-    free(par);
-    free(aa);
-    free(bb);
-    return ok;
-}
+#include "helpers.h"
 
 /* Run monotone and naive on P.  Returns monotone's status; on success asserts
 ** validity and equality with naive.  *fallbacks (if not NULL) gets the
@@ -137,7 +49,7 @@ static wk_status check_case_fb(const wk_polygon *P, const char *what, wk_colline
     wk_run_init(&Rn);
     R.opt.collinear = Rn.opt.collinear = rule;
     wk_skeleton *A = NULL, *B = NULL;
-    char msg[1024], why[256] = "";
+    char msg[1024], why[512] = "";
     wk_status st = wk_solve(&R, variant("monotone"), P, &A, NULL, NULL);
     if (st == WK_OK) {
         cr_assert_not_null(A);
@@ -158,8 +70,9 @@ static wk_status check_case_fb(const wk_polygon *P, const char *what, wk_colline
             ** the exact one), as events between nearly parallel edges are
             ** estimated from fast vertices */
             double tol = (P->n >= 1000 ? 1e-6 : 1e-7) * wk_polygon_scale(P);
-            cr_expect(same_skeleton(A, B, tol, why, sizeof why), "%s: differs from naive: %s",
-                      what, why);
+            sk_match m = {.tol = tol, .tol_t = tol / max_weight(P), .merge = true};
+            cr_expect(same_skeleton(A, B, m, why, sizeof why), "%s: differs from naive: %s", what,
+                      why);
         }
         wk_skeleton_free(&R, A);
         if (B) wk_skeleton_free(&Rn, B);
@@ -178,34 +91,18 @@ static wk_status check_case(const wk_polygon *P, const char *what, wk_collinear_
     return check_case_fb(P, what, rule, NULL);
 }
 
-static wk_polygon *generate(wk_run *R, const char *family, uint32_t n, uint64_t seed,
-                            const char *weights) {
-    wk_gen_params g;
-    wk_gen_params_init(&g);
-    g.family = family;
-    g.n = n;
-    g.seed = seed;
-    cr_assert_eq(wk_gen_parse_weights(R, weights, &g), WK_OK);
-    wk_polygon *P = NULL;
-    char msg[1024];
-    wk_status st = wk_generate(R, &g, &P);
-    err_text(R, msg, sizeof msg);
-    cr_assert_eq(st, WK_OK, "%s n=%u seed=%llu: %s", family, n, (unsigned long long)seed, msg);
-    return P;
-}
-
 /* One family and weight mode over the size ladder and ten seeds. */
 static void sweep(const char *family, const char *weights, bool fast_path) {
     static const uint32_t sizes[] = {4, 8, 20, 50, 200, 1000, 2000};
     uint32_t cases = 0, refused = 0, fell_back = 0;
     for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
         uint32_t n = sizes[k];
-        if (quick_mode() && n >= 1000) continue;
+        if (quick() && n >= 1000) continue;
         if (strcmp(family, "rectilinear") == 0 && n < 8) continue;
         for (uint64_t seed = 1; seed <= 10; seed++) {
             wk_run R;
             wk_run_init(&R);
-            wk_polygon *P = generate(&R, family, n, seed, weights);
+            wk_polygon *P = gen_polygon(&R, family, n, seed, weights);
             char what[128];
             snprintf(what, sizeof what, "%s n=%u seed=%llu weights=%s", family, n,
                      (unsigned long long)seed, weights);
@@ -240,13 +137,6 @@ Test(monotone, sweep_rectilinear_uniform, .timeout = 600) { sweep("rectilinear",
 
 /* ------------------------------------------------------------ hand-made */
 
-static void hand_path(char *buf, size_t size, const char *name) {
-    const char *f = __FILE__;
-    const char *slash = strrchr(f, '/');
-    if (slash) snprintf(buf, size, "%.*s/data/hand/%s.wpoly", (int)(slash - f), f, name);
-    else snprintf(buf, size, "data/hand/%s.wpoly", name);
-}
-
 Test(monotone, hand_cases) {
     static const char *names[] = {
         "square", "rect2x1", "sliver", "comb_equal", "cross", "cross_uneven", "h_shape",
@@ -259,12 +149,8 @@ Test(monotone, hand_cases) {
         for (int rule = 0; rule < 2; rule++) {
             wk_run R;
             wk_run_init(&R);
-            char path[512], msg[1024], what[600];
-            hand_path(path, sizeof path, names[i]);
-            wk_polygon *P = NULL;
-            wk_status st = wk_polygon_read_file(&R, path, &P);
-            err_text(&R, msg, sizeof msg);
-            cr_assert_eq(st, WK_OK, "%s: %s", path, msg);
+            char what[600];
+            wk_polygon *P = read_hand(&R, names[i]);
             snprintf(what, sizeof what, "%s (collinear rule %d)", names[i], rule);
             cr_expect_eq(check_case(P, what, (wk_collinear_rule)rule), WK_OK, "%s refused", what);
             wk_polygon_free(&R, P);
@@ -291,11 +177,7 @@ static wk_polygon *staircase(wk_run *R, uint32_t steps, double a, double b, doub
         x[k] = i * a, y[k] = i * b + h, k++;
     }
     for (uint32_t i = 0; i < n; i++) w[i] = wcycle ? wcycle[i % nw] : 1.0;
-    wk_polygon *P = NULL;
-    char msg[1024];
-    wk_status st = wk_polygon_from_arrays(R, n, x, y, w, "staircase", NULL, &P);
-    err_text(R, msg, sizeof msg);
-    cr_assert_eq(st, WK_OK, "staircase rejected: %s", msg);
+    wk_polygon *P = polygon_named(R, n, x, y, w, "staircase");
     free(x);
     free(y);
     free(w);
@@ -350,7 +232,7 @@ Test(monotone, refuses_non_monotone) {
         for (uint64_t seed = 1; seed <= 3; seed++) {
             wk_run R;
             wk_run_init(&R);
-            wk_polygon *P = generate(&R, families[f], 60, seed, "unit");
+            wk_polygon *P = gen_polygon(&R, families[f], 60, seed, "unit");
             char what[64];
             snprintf(what, sizeof what, "%s n=60 seed=%llu", families[f], (unsigned long long)seed);
             expect_refused(P, what);
@@ -363,7 +245,7 @@ Test(monotone, comb_family_is_monotone) {
     for (uint64_t seed = 1; seed <= 3; seed++) {
         wk_run R;
         wk_run_init(&R);
-        wk_polygon *P = generate(&R, "comb", 40, seed, "unit");
+        wk_polygon *P = gen_polygon(&R, "comb", 40, seed, "unit");
         char what[64];
         snprintf(what, sizeof what, "comb n=40 seed=%llu", (unsigned long long)seed);
         wk_status st = check_case(P, what, WK_COLLINEAR_LOWER);
@@ -379,7 +261,7 @@ static void fault_loop_seed(const char *family, uint32_t n, uint64_t seed, const
     for (int64_t k = 0;; k++) {
         wk_run R;
         wk_run_init(&R);
-        wk_polygon *P = generate(&R, family, n, seed, weights);
+        wk_polygon *P = gen_polygon(&R, family, n, seed, weights);
         size_t live0 = R.alloc.live;
         R.alloc.fail_after = (int64_t)R.alloc.calls + k;
         wk_skeleton *S = NULL;
@@ -421,7 +303,7 @@ Test(monotone, fault_injection) {
 Test(monotone, weighted_counterexample_falls_back) {
     wk_run R;
     wk_run_init(&R);
-    wk_polygon *P = generate(&R, "monotone", 8, 6, "uniform");
+    wk_polygon *P = gen_polygon(&R, "monotone", 8, 6, "uniform");
     uint64_t fb = 0;
     cr_expect_eq(check_case_fb(P, "monotone n=8 seed=6 uniform", WK_COLLINEAR_LOWER, &fb), WK_OK);
     cr_expect_eq(fb, 1, "the merge's failure was not detected (fallbacks %llu)",

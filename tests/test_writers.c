@@ -16,9 +16,7 @@
 #include <string.h>
 
 #include "wskel.h"
-#include "fixtures.h"
-
-
+#include "helpers.h"
 
 /* The fixtures' skeleton, validated: writers are tested on valid input. */
 static wk_skeleton *valid_skeleton(wk_run *R, const wk_polygon *P, uint32_t n_extra,
@@ -28,14 +26,7 @@ static wk_skeleton *valid_skeleton(wk_run *R, const wk_polygon *P, uint32_t n_ex
     return S;
 }
 
-static const double SQ_X[4] = {0, 1, 1, 0}, SQ_Y[4] = {0, 0, 1, 1};
-static const wk_node SQ_NODES[1] = {{0.5, 0.5, 0.5}};
-static const arc4 SQ_ARCS[4] = {{0, 4, 3, 0}, {1, 4, 0, 1}, {2, 4, 1, 2}, {3, 4, 2, 3}};
-
-static const double L_X[6] = {0, 2, 2, 1, 1, 0}, L_Y[6] = {0, 0, 1, 1, 2, 2};
-static const wk_node L_NODES[3] = {{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}, {0.5, 1.5, 0.5}};
-static const arc4 L_ARCS[8] = {{0, 6, 5, 0}, {1, 7, 0, 1}, {2, 7, 1, 2}, {3, 6, 2, 3},
-                               {4, 8, 3, 4}, {5, 8, 4, 5}, {6, 7, 2, 0}, {6, 8, 5, 3}};
+/* The unit square (SQ_*) and the L shape (L_*) are in helpers.h. */
 
 /* The same square given clockwise: stored reversed, so stored vertex j is
 ** input vertex 3 - j and every id differs between the two numberings. */

@@ -1,0 +1,198 @@
+"""testlib.py: what the Python tests share (tests/test_outputs.py,
+tests/test_degenerate.py, tests/test_cgal_agreement.py).
+
+  ROOT, DATA                    the repository and tests/data
+  WSKEL, WSKEL_GEN, WSKEL_CGAL  bin/wskel, bin/wskel-gen, bin/wskel-cgal, or
+                                what WSKEL_BIN, WSKEL_GEN_BIN, WSKEL_CGAL_BIN say
+  have(), need()                a program is built; skip the test unless
+  run()                         a command with a time limit: (exit, stdout, stderr)
+  wskel(), wskel_json()         bin/wskel with arguments; its JSON output parsed
+  list_counters()               what `bin/wskel --list-counters --variant V` prints
+  read_wpoly(), write_wpoly()   .wpoly files
+  cs                            scripts/compare_skeletons.py
+  Tally                         pass/fail counts of a test's cases: one summary
+                                line on stderr, one failure naming them all
+
+Import it from a test with
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import testlib
+"""
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DATA = os.path.join(ROOT, "tests", "data")
+WSKEL = os.environ.get("WSKEL_BIN", os.path.join(ROOT, "bin", "wskel"))
+WSKEL_GEN = os.environ.get("WSKEL_GEN_BIN", os.path.join(ROOT, "bin", "wskel-gen"))
+WSKEL_CGAL = os.environ.get("WSKEL_CGAL_BIN", os.path.join(ROOT, "bin", "wskel-cgal"))
+TIMEOUT = 120  # seconds for one program run: a hang is a failure, not a wait
+
+__all__ = ["ROOT", "DATA", "WSKEL", "WSKEL_GEN", "WSKEL_CGAL", "TIMEOUT", "have", "need", "run",
+           "wskel", "wskel_json", "list_counters", "read_wpoly", "write_wpoly", "cs", "Tally"]
+
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import compare_skeletons as cs  # noqa: E402,F401
+
+
+# ------------------------------------------------------------ programs
+
+def have(path):
+    """The program at path is built (a file we may execute)."""
+    return os.path.isfile(path) and os.access(path, os.X_OK)
+
+
+def need(*paths):
+    """Skip the calling test (or class, from setUpClass) unless every program
+    exists; the message names the missing ones."""
+    missing = [os.path.relpath(p, ROOT) for p in paths if not have(p)]
+    if missing:
+        raise unittest.SkipTest("not built yet: %s (run make)" % ", ".join(missing))
+
+
+def run(cmd, timeout=TIMEOUT, stdin=None):
+    """(exit code, stdout, stderr) of cmd; exit code None if it ran out of time."""
+    try:
+        p = subprocess.run(cmd, input=stdin, capture_output=True, text=True, timeout=timeout)
+        return p.returncode, p.stdout, p.stderr
+    except subprocess.TimeoutExpired:
+        return None, "", "timed out after %d s" % timeout
+
+
+def wskel(args, variant=None, timeout=TIMEOUT):
+    """bin/wskel [--variant V] ARGS: (exit code, stdout, stderr)."""
+    return run([WSKEL] + (["--variant", variant] if variant else []) + list(args), timeout)
+
+
+def wskel_json(args, variant=None, timeout=TIMEOUT):
+    """bin/wskel's JSON skeleton on stdout: (exit code, document or None,
+    stderr).  args name the input and any options but -o and --format."""
+    rc, out, err = wskel(["--format", "json"] + list(args), variant, timeout)
+    return rc, (json.loads(out) if rc == 0 else None), err
+
+
+def list_counters(variant=None):
+    """[(name, meaning)] of `bin/wskel --list-counters [--variant V]`: the
+    counters a run of V reports (the keys of the JSON stats, with time_s and
+    peak_bytes).  Raises AssertionError on a failure or a malformed line."""
+    rc, out, err = wskel(["--list-counters"], variant)
+    if rc != 0:
+        raise AssertionError("wskel --list-counters --variant %s: exit %s: %s"
+                             % (variant, rc, err.strip()))
+    rows = []
+    for line in out.splitlines():
+        m = re.fullmatch(r"([a-z][a-z0-9_]*)\t(\S.*)", line)
+        if not m:
+            raise AssertionError("--list-counters --variant %s: line %r is not name<TAB>meaning"
+                                 % (variant, line))
+        rows.append((m.group(1), m.group(2)))
+    return rows
+
+
+# ------------------------------------------------------------ polygons
+
+def read_wpoly(path):
+    """(points, weights) in input order.  '#' lines and blank lines are
+    ignored, the first other line is n, then n lines 'x y [w]' (w, default 1,
+    weights the edge to the next vertex).  ValueError if malformed."""
+    pts, ws, n = [], [], None
+    with open(path) as f:
+        for line in f:
+            s = line.strip()
+            if not s or s.startswith("#"):
+                continue
+            if n is None:
+                n = int(s)
+                continue
+            v = [float(c) for c in s.split()]
+            if len(v) not in (2, 3):
+                raise ValueError("%s: line %r is not 'x y [w]'" % (path, s))
+            pts.append((v[0], v[1]))
+            ws.append(v[2] if len(v) > 2 else 1.0)
+    if n != len(pts):
+        raise ValueError("%s: header says %s vertices, found %d" % (path, n, len(pts)))
+    return pts, ws
+
+
+def write_wpoly(path, pts, ws=None, comment=None):
+    """Write pts (and the weights ws, if any) as .wpoly, every number with 17
+    significant digits (integers stay integers), after a '# comment' line."""
+    with open(path, "w") as f:
+        if comment:
+            f.write("# %s\n" % comment)
+        f.write("%d\n" % len(pts))
+        for i, (x, y) in enumerate(pts):
+            if ws:
+                f.write("%.17g %.17g %.17g\n" % (x, y, ws[i]))
+            else:
+                f.write("%.17g %.17g\n" % (x, y))
+    return path
+
+
+# ------------------------------------------------------------- verdicts
+
+class Tally:
+    """The cases of one test: how many passed, the failure lines of the others
+    (their inputs copied aside for replay), and those not compared and why.
+
+        t = Tally("degenerate files")
+        for ...:
+            t.case(fails, path)        # fails: [] if the case passed
+        t.report(self)                 # summary on stderr; fails the test
+    """
+
+    def __init__(self, what):
+        self.what = what
+        self.cases = 0
+        self.passed = 0
+        self.failures = []
+        self.skipped = {}  # kind -> [why]
+        self.keep = None  # directory of the failing inputs, made on the first
+
+    def case(self, failures=(), path=None):
+        """One case with its failure lines (none: it passed); a failing case's
+        input at path is copied to self.keep at once (later cases may reuse
+        the file)."""
+        self.cases += 1
+        if not failures:
+            self.passed += 1
+            return
+        self.failures.extend(failures)
+        if path and os.path.exists(path):
+            if self.keep is None:
+                self.keep = tempfile.mkdtemp(prefix="wskel-fail-")
+            shutil.copy(path, os.path.join(self.keep, "%03d-%s" % (self.cases,
+                                                                    os.path.basename(path))))
+
+    def skip(self, why, kind="skipped"):
+        """A case not compared, for a reason that is no failure (kind groups
+        them in the summary)."""
+        self.skipped.setdefault(kind, []).append(why)
+
+    def summary(self, detail=""):
+        notes = ["%d %s: %s" % (len(w), kind, w[0]) for kind, w in self.skipped.items()]
+        return "%s: %d/%d passed%s%s" % (self.what, self.passed, self.cases,
+                                         " (%s)" % detail if detail else "",
+                                         "; " + "; ".join(notes) if notes else "")
+
+    def report(self, test, detail="", limit=20, hint=None):
+        """Print the summary to stderr; fail `test` with the first `limit`
+        failure lines if there are any (and where their inputs are kept)."""
+        print(self.summary(detail), file=sys.stderr)
+        if not self.failures:
+            return
+        lines = ["%s: %d of %d cases failed%s" % (
+            self.what, self.cases - self.passed, self.cases,
+            "; inputs kept in %s" % self.keep if self.keep else "")]
+        lines += ["  " + f for f in self.failures[:limit]]
+        if len(self.failures) > limit:
+            lines.append("  ... %d more" % (len(self.failures) - limit))
+        if hint:
+            lines.append(hint)
+        test.fail("\n".join(lines))
