@@ -114,6 +114,7 @@ static uint32_t *sort_vertices(const wk_point *p, uint32_t *a, uint32_t *tmp, ui
 ** intersection reported, depend on the input only. */
 
 typedef struct sweep {
+    wk_run *R; /* counts the exact stages of the comparisons */
     const wk_point *p;
     uint32_t n;
     uint32_t root;
@@ -199,7 +200,8 @@ static bool test_pair(sweep *S, uint32_t a, uint32_t b) {
     if (a == WK_NONE || b == WK_NONE || adjacent_edges(a, b, S->n)) return true;
     const wk_point *p = S->p;
     uint32_t n = S->n;
-    wk_seg_meet m = wk_segments_meet(p[a], p[next_of(a, n)], p[b], p[next_of(b, n)]);
+    wk_seg_meet m =
+        wk_segments_meet_counted(S->R, p[a], p[next_of(a, n)], p[b], p[next_of(b, n)]);
     if (m == WK_SEG_DISJOINT) return true;
     record(S, a, b, m, WK_NONE);
     return false;
@@ -212,14 +214,14 @@ static int compare_at(sweep *S, uint32_t s, uint32_t t, uint32_t v) {
     const wk_point *p = S->p;
     if (left_vertex(S, t) == v) {
         /* t is s's sibling, also starting at v: order by direction. */
-        int o = wk_orient2d(p[v], p[right_vertex(S, t)], p[right_vertex(S, s)], NULL);
+        int o = wk_orient2d_counted(S->R, p[v], p[right_vertex(S, t)], p[right_vertex(S, s)]);
         if (o == 0) record(S, s, t, WK_SEG_OVERLAP, WK_NONE); /* defensive: spikes are
                                                                  rejected before */
         return o;
     }
     /* t started left of v and ends right of it (edges ending at v are
     ** removed already and only s and its sibling have v as an endpoint). */
-    int o = wk_orient2d(p[left_vertex(S, t)], p[right_vertex(S, t)], p[v], NULL);
+    int o = wk_orient2d_counted(S->R, p[left_vertex(S, t)], p[right_vertex(S, t)], p[v]);
     if (o == 0) record(S, s, t, WK_SEG_TOUCH, v); /* v lies on t */
     return o;
 }
@@ -290,14 +292,15 @@ static bool sweep_run(sweep *S, const uint32_t *order) {
 
 /* For a TOUCH between non-adjacent edges a and b: a vertex of one lying on
 ** the other (there is one, as vertices are distinct). */
-static void touch_vertex(const wk_point *p, uint32_t n, uint32_t a, uint32_t b, uint32_t *vertex,
-                         uint32_t *on_edge) {
+static void touch_vertex(wk_run *R, const wk_point *p, uint32_t n, uint32_t a, uint32_t b,
+                         uint32_t *vertex, uint32_t *on_edge) {
     uint32_t ends[2][2] = {{a, next_of(a, n)}, {b, next_of(b, n)}};
     uint32_t edges[2] = {a, b};
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++) {
             uint32_t v = ends[i][j], e = edges[1 - i];
-            if (wk_segments_meet(p[v], p[v], p[e], p[next_of(e, n)]) != WK_SEG_DISJOINT) {
+            if (wk_segments_meet_counted(R, p[v], p[v], p[e], p[next_of(e, n)]) !=
+                WK_SEG_DISJOINT) {
                 *vertex = v;
                 *on_edge = e;
                 return;
@@ -313,7 +316,7 @@ static wk_status report_intersection(wk_run *R, const sweep *S, const char *name
     uint32_t a = S->bad_a, b = S->bad_b;
     if (S->bad_kind == WK_SEG_TOUCH) {
         uint32_t v = S->bad_vertex, e = b;
-        if (v == WK_NONE) touch_vertex(S->p, S->n, a, b, &v, &e);
+        if (v == WK_NONE) touch_vertex(R, S->p, S->n, a, b, &v, &e);
         if (v != WK_NONE) {
             /* If an edge at v runs along e, say so: "overlaps" tells more
             ** than "touches". */
@@ -321,8 +324,8 @@ static wk_status report_intersection(wk_run *R, const sweep *S, const char *name
             for (int i = 0; i < 2; i++) {
                 uint32_t f = at_v[i];
                 if (!adjacent_edges(f, e, n) &&
-                    wk_segments_meet(S->p[f], S->p[next_of(f, n)], S->p[e],
-                                     S->p[next_of(e, n)]) == WK_SEG_OVERLAP) {
+                    wk_segments_meet_counted(R, S->p[f], S->p[next_of(f, n)], S->p[e],
+                                             S->p[next_of(e, n)]) == WK_SEG_OVERLAP) {
                     a = f < e ? f : e;
                     b = f < e ? e : f;
                     return WK_FAIL(R, WK_EINPUT, name, line_of(lines, a),
@@ -398,13 +401,13 @@ static wk_status check_local(wk_run *R, const wk_point *p, uint32_t n, const cha
                        "vertex %u repeats vertex %u (zero-length edge %u)", j, i, i);
     }
     uint32_t k = 2;
-    while (k < n && wk_orient2d(p[0], p[1], p[k], NULL) == 0) k++;
+    while (k < n && wk_orient2d_counted(R, p[0], p[1], p[k]) == 0) k++;
     if (k == n)
         return WK_FAIL(R, WK_EINPUT, name, line_of(lines, 0),
                        "polygon has zero area (all %u vertices are collinear)", n);
     for (uint32_t v = 0; v < n; v++) {
         uint32_t u = prev_of(v, n), w = next_of(v, n);
-        if (wk_orient2d(p[u], p[v], p[w], NULL) != 0) continue;
+        if (wk_orient2d_counted(R, p[u], p[v], p[w]) != 0) continue;
         /* Collinear: straight on (valid) if u and w lie on opposite sides of
         ** v, a spike if on the same side.  Exact: only comparisons. */
         if ((wk_point_lex_cmp(p[u], p[v]) < 0) != (wk_point_lex_cmp(p[w], p[v]) < 0)) continue;
@@ -423,7 +426,7 @@ static wk_status check_simple(wk_run *R, const wk_point *p, uint32_t n, const ch
     char da[96], db[96];
     uint32_t *buf = WK_NEW_ARRAY(R, uint32_t, n);
     uint32_t *tmp = WK_NEW_ARRAY(R, uint32_t, n);
-    sweep S = {p, n, WK_NONE, NULL, NULL, NULL, WK_NONE, WK_NONE, WK_NONE, WK_SEG_DISJOINT};
+    sweep S = {R, p, n, WK_NONE, NULL, NULL, NULL, WK_NONE, WK_NONE, WK_NONE, WK_SEG_DISJOINT};
     if (!buf || !tmp) goto oom;
     for (uint32_t i = 0; i < n; i++) buf[i] = i;
     const uint32_t *order = sort_vertices(p, buf, tmp, n);
@@ -461,11 +464,17 @@ done:
 ** clockwise.  The lexicographically smallest vertex is convex (both
 ** neighbours lie on one side of it; collinear would be a spike), so the turn
 ** there is the polygon's. */
-static int orientation(const wk_point *p, uint32_t n) {
+static int orientation(wk_run *R, const wk_point *p, uint32_t n) {
     uint32_t m = 0;
     for (uint32_t i = 1; i < n; i++)
         if (wk_point_lex_cmp(p[i], p[m]) < 0) m = i;
-    return wk_orient2d(p[prev_of(m, n)], p[m], p[next_of(m, n)], NULL);
+    return wk_orient2d_counted(R, p[prev_of(m, n)], p[m], p[next_of(m, n)]);
+}
+
+/* wk_polygon_is_reflex, counting its exact stage on R. */
+static bool is_reflex_counted(wk_run *R, const wk_polygon *P, uint32_t i) {
+    uint32_t n = P->n;
+    return wk_orient2d_counted(R, P->p[prev_of(i, n)], P->p[i], P->p[next_of(i, n)]) < 0;
 }
 
 /* ---- construction ---- */
@@ -502,7 +511,7 @@ wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const d
         (st = check_simple(R, P->p, n, name, lines)) != WK_OK)
         goto fail;
 
-    if (orientation(P->p, n) < 0) {
+    if (orientation(R, P->p, n) < 0) {
         /* Reverse: stored vertex j := input vertex n-1-j.  Stored edge j then
         ** runs input n-1-j -> n-2-j, i.e. it is input edge (n-2-j) mod n:
         ** weights w[0..n-2] reverse among themselves, w[n-1] stays. */
@@ -529,7 +538,7 @@ wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const d
         goto fail;
     }
     P->r = 0;
-    for (uint32_t i = 0; i < n; i++) P->r += wk_polygon_is_reflex(P, i);
+    for (uint32_t i = 0; i < n; i++) P->r += is_reflex_counted(R, P, i);
     *out = P;
     return WK_OK;
 fail:
@@ -548,10 +557,10 @@ wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P) {
         (st = check_local(R, P->p, n, name, NULL)) != WK_OK ||
         (st = check_simple(R, P->p, n, name, NULL)) != WK_OK)
         return st;
-    if (orientation(P->p, n) < 0)
+    if (orientation(R, P->p, n) < 0)
         return WK_FAIL(R, WK_EINPUT, name, 0, "polygon is stored clockwise");
     uint32_t r = 0;
-    for (uint32_t i = 0; i < n; i++) r += wk_polygon_is_reflex(P, i);
+    for (uint32_t i = 0; i < n; i++) r += is_reflex_counted(R, P, i);
     if (r != P->r)
         return WK_FAIL(R, WK_EINPUT, name, 0, "reflex count is %u, stored %u", r, P->r);
     return WK_OK;

@@ -220,11 +220,14 @@ static bool between(wk_point a, wk_point b, wk_point p) {
     return wk_point_lex_cmp(a, p) <= 0 && wk_point_lex_cmp(p, b) <= 0;
 }
 
-wk_seg_meet wk_segments_meet(wk_point a, wk_point b, wk_point c, wk_point d) {
-    int o1 = wk_orient2d(a, b, c, NULL);
-    int o2 = wk_orient2d(a, b, d, NULL);
-    int o3 = wk_orient2d(c, d, a, NULL);
-    int o4 = wk_orient2d(c, d, b, NULL);
+wk_seg_meet wk_segments_meet_ex(wk_point a, wk_point b, wk_point c, wk_point d,
+                                uint32_t *exact_stages) {
+    bool x1, x2, x3, x4;
+    int o1 = wk_orient2d(a, b, c, &x1);
+    int o2 = wk_orient2d(a, b, d, &x2);
+    int o3 = wk_orient2d(c, d, a, &x3);
+    int o4 = wk_orient2d(c, d, b, &x4);
+    if (exact_stages) *exact_stages = (uint32_t)x1 + x2 + x3 + x4;
     if (o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0) {
         /* All four points on one line (or degenerate segments): compare the
         ** lexicographic extents. */
@@ -247,6 +250,10 @@ wk_seg_meet wk_segments_meet(wk_point a, wk_point b, wk_point c, wk_point d) {
         (o3 == 0 && between(c, d, a)) || (o4 == 0 && between(c, d, b)))
         return WK_SEG_TOUCH;
     return WK_SEG_DISJOINT;
+}
+
+wk_seg_meet wk_segments_meet(wk_point a, wk_point b, wk_point c, wk_point d) {
+    return wk_segments_meet_ex(a, b, c, d, NULL);
 }
 
 bool wk_segments_intersect(wk_point a, wk_point b, wk_point c, wk_point d) {

@@ -5,7 +5,8 @@
 ** Invariants: alloc.live is the sum of the sizes of the blocks handed out and
 ** not yet freed (callers pass the old size, as in Lua, so no headers);
 ** alloc.peak >= alloc.live; err.code != WK_OK once any failure was recorded,
-** and later failures never overwrite the first.
+** and later failures never overwrite the first; a strict run closes with
+** live == blocks == 0 or not at all (it aborts).
 */
 #define _POSIX_C_SOURCE 200809L
 #include "variant.h"
@@ -17,9 +18,11 @@
 
 /* ---- run ---- */
 
-void wk_run_init(wk_run *R) {
+/* Parenthesised name: a file built with WK_CHECKED_RUNS (where wk_run_init is
+** a macro) can still define the function. */
+void (wk_run_init)(wk_run *R) {
     memset(R, 0, sizeof *R);
-    R->alloc.fn = wk_libc_realloc;
+    R->alloc.backend = &wk_alloc_libc;
     R->alloc.fail_after = -1;
     R->obs = &wk_observer_counting;
     R->obs_ud = &R->counters;
@@ -29,7 +32,25 @@ void wk_run_init(wk_run *R) {
     R->err.code = WK_OK;
 }
 
-size_t wk_run_close(wk_run *R) { return R->alloc.live; }
+void wk_run_init_checked(wk_run *R) {
+    (wk_run_init)(R);
+    R->alloc.backend = &wk_alloc_debug;
+    R->alloc.strict = true;
+}
+
+size_t wk_run_close(wk_run *R) {
+    const wk_alloc *A = &R->alloc;
+    if (A->strict && (A->live || A->blocks)) {
+        /* A leak (or a free with the wrong size) caught where the run ends,
+        ** not at the test's assertion, which a leaking error path may skip. */
+        fprintf(stderr,
+                "wskel: wk_run_close: %zu bytes in %zu blocks still live (a leak, or a free "
+                "with the wrong size)\n",
+                A->live, A->blocks);
+        abort();
+    }
+    return A->live;
+}
 
 void wk_run_reset_peak(wk_run *R) { R->alloc.peak = R->alloc.live; }
 

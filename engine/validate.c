@@ -189,6 +189,7 @@ static wk_status grid_build(wk_run *R, grid *G, const wk_point *pts, uint32_t k,
 /* --------------------------------------------------------- point in polygon */
 
 typedef struct pip {
+    wk_run *R; /* counts the exact stages of the crossing tests */
     grid G;
     const wk_polygon *P;
     uint8_t *cell;   /* per cell: bit 7 set if its reference point is inside P;
@@ -212,10 +213,10 @@ static wk_point edge_q(const wk_polygon *P, uint32_t e) { return P->p[next_of(e,
 
 /* Does edge p -> q cross segment c -> z?  c and z must not be on the
 ** boundary; a vertex on line cz counts as right of it (see the top). */
-static bool edge_crosses(wk_point p, wk_point q, wk_point c, wk_point z) {
-    bool sp = wk_orient2d(c, z, p, NULL) > 0, sq = wk_orient2d(c, z, q, NULL) > 0;
+static bool edge_crosses(wk_run *R, wk_point p, wk_point q, wk_point c, wk_point z) {
+    bool sp = wk_orient2d_counted(R, c, z, p) > 0, sq = wk_orient2d_counted(R, c, z, q) > 0;
     if (sp == sq) return false;
-    return wk_orient2d(p, q, c, NULL) * wk_orient2d(p, q, z, NULL) < 0;
+    return wk_orient2d_counted(R, p, q, c) * wk_orient2d_counted(R, p, q, z) < 0;
 }
 
 static void pip_tick(pip *Q) {
@@ -235,7 +236,7 @@ static unsigned pip_crossings(pip *Q, size_t c0, size_t c1, wk_point c, wk_point
             uint32_t e = Q->G.item[k];
             if (Q->stamp[e] == Q->clock) continue;
             Q->stamp[e] = Q->clock;
-            odd ^= edge_crosses(edge_p(Q->P, e), edge_q(Q->P, e), c, z);
+            odd ^= edge_crosses(Q->R, edge_p(Q->P, e), edge_q(Q->P, e), c, z);
         }
     }
     return odd;
@@ -244,7 +245,8 @@ static unsigned pip_crossings(pip *Q, size_t c0, size_t c1, wk_point c, wk_point
 static bool on_cell_edge(const pip *Q, size_t cell, wk_point z) {
     for (uint32_t k = Q->G.start[cell]; k < Q->G.start[cell + 1]; k++) {
         uint32_t e = Q->G.item[k];
-        if (wk_segments_meet(edge_p(Q->P, e), edge_q(Q->P, e), z, z) != WK_SEG_DISJOINT)
+        if (wk_segments_meet_counted(Q->R, edge_p(Q->P, e), edge_q(Q->P, e), z, z) !=
+            WK_SEG_DISJOINT)
             return true;
     }
     return false;
@@ -262,6 +264,7 @@ static void pip_clear(wk_run *R, pip *Q) {
 
 static wk_status pip_build(wk_run *R, pip *Q, const wk_polygon *P) {
     memset(Q, 0, sizeof *Q);
+    Q->R = R;
     Q->P = P;
     if (grid_build(R, &Q->G, P->p, P->n, 0.5, P->name) != WK_OK) return R->err.code;
     const grid *G = &Q->G;
@@ -557,7 +560,7 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
     ** an arc folding back along the next one at a node, off by 1e-16).  The
     ** bar is rounding (64 ulp of the coordinates, and at most 1e-3 tol), not
     ** tol: legitimate faces can be far thinner than tol (a triangle with
-    ** weights 1, 1000, 0.001: 1e-6 wide at 1000; n = 10^6 monotone polygons:
+    ** weights 1, 1000, 0.001: 1e-6 wide at 1000; n = 10^6 polygons of the x-sweep family:
     ** long faces 1e-3 wide; a 2e-3 polygon at 1e6 from the origin: faces
     ** 1e-8 wide, where 64 ulp is 1.4e-8). */
     double lab = hypot(b.x - a.x, b.y - a.y), lcd = hypot(d.x - c.x, d.y - c.y);
@@ -592,7 +595,7 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
                                side_name(F, j, s2, sizeof s2), ov);
         }
     }
-    wk_seg_meet m = wk_segments_meet(a, b, c, d);
+    wk_seg_meet m = wk_segments_meet_counted(R, a, b, c, d);
     if (m == WK_SEG_CROSS) {
         double near = fmin(fmin(seg_dist(c, d, a), seg_dist(c, d, b)),
                            fmin(seg_dist(a, b, c), seg_dist(a, b, d)));

@@ -28,7 +28,7 @@
 #include <stdio.h>
 
 #define WK_NONE UINT32_MAX
-#define WK_K_MAX (UINT32_MAX - 1) /* --k max: cache the whole arrangement */
+#define WK_K_MAX (UINT32_MAX - 1) /* --k max: a variant's cache holds everything */
 
 typedef enum wk_status {
     WK_OK = 0,
@@ -36,7 +36,7 @@ typedef enum wk_status {
     WK_ENOMEM,   /* allocation failed or over the memory limit: exit 2 */
     WK_EALGO,    /* the algorithm could not handle the input: exit 2 */
     WK_EUNSUPPORTED, /* the variant does not apply to this kind of polygon
-                        (monotone: monotone in no direction): exit 2 */
+                        (e.g. a polygon outside its class): exit 2 */
     WK_EINVALID, /* the validator rejected an output: exit 3 */
     WK_EUSAGE    /* bad options: exit 64 */
 } wk_status;
@@ -60,15 +60,43 @@ typedef struct wk_error {
 
 /* ------------------------------------------------------------- allocator */
 
-/* Lua's allocator shape: old_size is the size the caller allocated, so the
-** statistics need no block headers.  new_size == 0 frees and returns NULL. */
-typedef void *(*wk_realloc_fn)(void *ud, void *p, size_t old_size, size_t new_size);
-/* The libc backend (the default). */
-void *wk_libc_realloc(void *ud, void *p, size_t old_size, size_t new_size);
+/* An allocator backend.  realloc has Lua's lua_Alloc shape: old_size is the
+** size the caller allocated (0 when p is NULL), so the statistics need no
+** block headers; new_size == 0 frees p and returns NULL; on failure it
+** returns NULL and leaves p intact.  The run (wk_realloc) keeps the
+** statistics and the limits; a backend only provides memory. */
+typedef struct wk_alloc_backend {
+    const char *name;
+    void *(*realloc)(void *ud, void *p, size_t old_size, size_t new_size);
+} wk_alloc_backend;
+
+/* libc malloc/realloc/free; ud unused.  The default. */
+extern const wk_alloc_backend wk_alloc_libc;
+
+/* The checking backend for tests.  Each block carries a header (its size)
+** and guard bytes before and after it; every resize and free checks them
+** and checks old_size against the recorded size, and aborts with a message
+** naming the block's size on a mismatch (an overrun, an underrun, a wrong
+** count in WK_FREE_ARRAY, a double free).  New bytes are filled with 0xA5
+** (wk_calloc still zeroes), freed blocks with 0xDD, and a resize always
+** moves the block.  ud is NULL or a wk_alloc_debug_state for fault
+** injection.  Stateless with ud NULL; with a state, one run (thread) at a
+** time. */
+extern const wk_alloc_backend wk_alloc_debug;
+
+typedef struct wk_alloc_debug_state {
+    uint64_t fail_at;   /* refuse the request with this number (1-based,
+                           counting every request that allocates, resizes
+                           included, frees not); 0: never */
+    bool keep_failing;  /* also refuse every request after fail_at */
+    uint64_t requests;  /* requests seen so far (refused ones included) */
+    uint64_t refused;   /* requests refused by the injection */
+} wk_alloc_debug_state;
 
 typedef struct wk_alloc {
-    wk_realloc_fn fn;     /* backend; libc by default */
-    void *ud;
+    const wk_alloc_backend *backend; /* wk_alloc_libc by default; change it
+                             only while no block is live */
+    void *ud;             /* the backend's */
     size_t live;          /* bytes allocated now */
     size_t peak;          /* high-water mark of live since the last reset */
     size_t blocks;        /* live blocks */
@@ -76,6 +104,9 @@ typedef struct wk_alloc {
     size_t limit;         /* refuse to go beyond this many live bytes; 0: none */
     int64_t fail_after;   /* fault injection: fail the call after this many
                              successful allocations; -1: never */
+    bool strict;          /* wk_run_close aborts unless live == blocks == 0;
+                             also (as with the debug backend) a nonzero old
+                             size for an empty block aborts (see wk_realloc) */
 } wk_alloc;
 
 /* ------------------------------------------------------------- counters */
@@ -174,10 +205,12 @@ typedef enum wk_collinear_rule {
 } wk_collinear_rule;
 
 typedef struct wk_options {
-    uint32_t k;              /* arrangement cache size; WK_K_MAX for max */
+    uint32_t k;              /* cache size of variants with WK_VARIANT_USES_K; WK_K_MAX for max */
     wk_collinear_rule collinear;
     int threads;             /* OpenMP threads for variants that use them */
-    bool check_invariants;   /* run costly internal checks after each event */
+    bool check_invariants;   /* after every group of events, check the
+                                wavefront's and the finder's invariants
+                                (O(n) each: for tests, --check-invariants) */
 } wk_options;
 
 /* ------------------------------------------------------------------ run */
@@ -195,8 +228,18 @@ typedef struct wk_run {
 /* Cannot fail; leaves R closable.  Default options, libc allocator,
 ** counting observer. */
 void wk_run_init(wk_run *R);
+/* wk_run_init, then the debug backend (no fault injection, ud NULL) and
+** alloc.strict: a run whose every allocation is checked. */
+void wk_run_init_checked(wk_run *R);
+/* Test builds compile their own sources with -DWK_CHECKED_RUNS (see the
+** Makefile), so that every run a test opens is checked without each test
+** saying so; the library itself is built without it. */
+#if defined(WK_CHECKED_RUNS)
+#define wk_run_init(R) wk_run_init_checked(R)
+#endif
 /* Releases nothing itself (objects are freed by their owners); returns the
-** number of live bytes left, which must be 0 after a clean run. */
+** number of live bytes left, which must be 0 after a clean run.  With
+** alloc.strict, a leak aborts instead, naming the live bytes and blocks. */
 size_t wk_run_close(wk_run *R);
 /* Start a new phase for the peak statistic: peak := live. */
 void wk_run_reset_peak(wk_run *R);
@@ -218,16 +261,45 @@ void wk_error_format(const wk_run *R, char *buf, size_t size);
 
 /* Raw allocation through the run (counts bytes, honours limit/fault
 ** injection).  Returns NULL on failure after recording WK_ENOMEM.
-** wk_realloc(R, p, old, 0) frees and returns NULL without failing. */
+** wk_realloc(R, p, old, 0) frees and returns NULL without failing.
+**
+** Empty blocks: a request for 0 bytes (wk_calloc with count or size 0, e.g.
+** WK_NEW_ARRAY(R, T, 0)) succeeds with a non-NULL pointer to no storage,
+** shared by all empty blocks, that must not be dereferenced.  It is counted
+** as an allocation call (fail_after may refuse it, as before) but adds no
+** live bytes and no block, and the backend never sees it.  Freeing
+** it (old size 0, as WK_FREE_ARRAY(R, p, 0) passes) does nothing; growing it
+** is a fresh allocation.  So allocation and free agree for every count,
+** with no size rounding for callers to repeat. */
 void *wk_realloc(wk_run *R, void *p, size_t old_size, size_t new_size);
 void *wk_calloc(wk_run *R, size_t count, size_t size);
 #define WK_NEW_ARRAY(R, T, n) ((T *)wk_calloc((R), (n), sizeof(T)))
 #define WK_FREE_ARRAY(R, p, n) \
     ((void)wk_realloc((R), (p), (size_t)(n) * sizeof(*(p)), 0), (p) = NULL)
-/* Grow *pp (an array of elem_size elements with capacity *cap) to hold at
-** least need elements; doubles.  On failure *pp and *cap are unchanged. */
+
+/* Growing arrays.  wk_grow_ptr returns p grown to hold at least need
+** elements of elem_size bytes (capacity *cap, doubling from 8) and updates
+** *cap; on failure it records WK_ENOMEM and returns p itself with *cap
+** unchanged, so the array is never lost.  Nothing happens when need <= *cap
+** and p is not NULL.
+**
+** WK_GROW(R, p, cap, need) applies it to an array p of any object type T
+** and yields a wk_status.  It assigns the result to p in p's own type: a
+** T * object is only ever accessed as a T *, where storing through a
+** (void **) cast of &p would access it as a void * (undefined behaviour by
+** the aliasing rules, and wrong wherever T * and void * differ in
+** representation).  C11 has no typed temporaries in an expression, so the
+** status comes from the postcondition, which holds exactly on success:
+** p != NULL and cap >= need.  p, cap and need are evaluated more than once,
+** so they must be free of side effects (they are plain lvalues and sums in
+** practice). */
+void *wk_grow_ptr(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_size);
+#define WK_GROW(R, p, cap, need)                                                   \
+    ((p) = wk_grow_ptr((R), (p), &(cap), (need), sizeof *(p)),                     \
+     (wk_status)((p) != NULL && (cap) >= (uint32_t)(need) ? WK_OK : WK_ENOMEM))
+/* The same for an array held in an object of type void * (*pp must be one:
+** for a T * use WK_GROW, or copy it to a void * and back). */
 wk_status wk_grow(wk_run *R, void **pp, uint32_t *cap, uint32_t need, size_t elem_size);
-#define WK_GROW(R, p, cap, need) wk_grow((R), (void **)&(p), &(cap), (need), sizeof(*(p)))
 
 /* Observer notifications (thin inline wrappers). */
 static inline void wk_notify_event(wk_run *R, uint32_t counter, const wk_event *e) {
@@ -316,8 +388,30 @@ typedef enum wk_seg_meet {
     WK_SEG_OVERLAP
 } wk_seg_meet;
 wk_seg_meet wk_segments_meet(wk_point a, wk_point b, wk_point c, wk_point d);
+/* wk_segments_meet, also setting *exact_stages (may be NULL) to how many of
+** its four orientation tests ran the exact stage, for callers that count
+** exact_fallbacks (the predicates know no run). */
+wk_seg_meet wk_segments_meet_ex(wk_point a, wk_point b, wk_point c, wk_point d,
+                                uint32_t *exact_stages);
 /* True if the closed segments [a, b] and [c, d] share a point (exact). */
 bool wk_segments_intersect(wk_point a, wk_point b, wk_point c, wk_point d);
+
+/* wk_orient2d and wk_segments_meet for callers that have a run: each
+** orientation test that needed the exact stage counts 1 on
+** WK_COUNTER_exact_fallbacks. */
+static inline int wk_orient2d_counted(wk_run *R, wk_point a, wk_point b, wk_point c) {
+    bool exact;
+    int o = wk_orient2d(a, b, c, &exact);
+    if (exact) wk_count(R, WK_COUNTER_exact_fallbacks, 1);
+    return o;
+}
+static inline wk_seg_meet wk_segments_meet_counted(wk_run *R, wk_point a, wk_point b, wk_point c,
+                                                   wk_point d) {
+    uint32_t exact;
+    wk_seg_meet m = wk_segments_meet_ex(a, b, c, d, &exact);
+    if (exact) wk_count(R, WK_COUNTER_exact_fallbacks, exact);
+    return m;
+}
 
 /* ------------------------------------------------------------- skeleton */
 

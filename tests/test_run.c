@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "wskel.h"
-#include "fixtures.h"
+#include "helpers.h"
 
 Test(run, counts_live_and_peak_bytes) {
     wk_run R;
