@@ -96,6 +96,7 @@ test-asan: $(BA)/tests/run_tests $(BA)/wskel
 	WSKEL_BIN=$(BA)/wskel WSKEL_DEGENERATE_CASES=400 WSKEL_MONO_CASES=150 WSKEL_REAL_CASES=8 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(PY) tests/test_degenerate.py
 test-cli: all
 	bash tests/cli_tests.sh
+	bash tests/test_layering.sh
 test-py: all
 	$(PY) tests/test_outputs.py
 	$(PY) tests/test_degenerate.py

@@ -471,8 +471,7 @@ static int orientation(wk_run *R, const wk_point *p, uint32_t n) {
     return wk_orient2d_counted(R, p[prev_of(m, n)], p[m], p[next_of(m, n)]);
 }
 
-/* wk_polygon_is_reflex, counting its exact stage on R. */
-static bool is_reflex_counted(wk_run *R, const wk_polygon *P, uint32_t i) {
+bool wk_polygon_is_reflex_counted(wk_run *R, const wk_polygon *P, uint32_t i) {
     uint32_t n = P->n;
     return wk_orient2d_counted(R, P->p[prev_of(i, n)], P->p[i], P->p[next_of(i, n)]) < 0;
 }
@@ -538,7 +537,7 @@ wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const d
         goto fail;
     }
     P->r = 0;
-    for (uint32_t i = 0; i < n; i++) P->r += is_reflex_counted(R, P, i);
+    for (uint32_t i = 0; i < n; i++) P->r += wk_polygon_is_reflex_counted(R, P, i);
     *out = P;
     return WK_OK;
 fail:
@@ -560,7 +559,7 @@ wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P) {
     if (orientation(R, P->p, n) < 0)
         return WK_FAIL(R, WK_EINPUT, name, 0, "polygon is stored clockwise");
     uint32_t r = 0;
-    for (uint32_t i = 0; i < n; i++) r += is_reflex_counted(R, P, i);
+    for (uint32_t i = 0; i < n; i++) r += wk_polygon_is_reflex_counted(R, P, i);
     if (r != P->r)
         return WK_FAIL(R, WK_EINPUT, name, 0, "reflex count is %u, stored %u", r, P->r);
     return WK_OK;

@@ -358,6 +358,8 @@ uint32_t wk_polygon_output_node(const wk_polygon *P, uint32_t j);
 double wk_polygon_area(const wk_polygon *P);
 /* True if vertex i is reflex (robust orientation test). */
 bool wk_polygon_is_reflex(const wk_polygon *P, uint32_t i);
+/* The same, counting an exact stage on R's exact_fallbacks. */
+bool wk_polygon_is_reflex_counted(wk_run *R, const wk_polygon *P, uint32_t i);
 
 /* ----------------------------------------------------------- predicates */
 

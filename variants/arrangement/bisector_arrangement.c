@@ -59,7 +59,7 @@ wk_status wk_arrangement_segments(wk_run *R, const wk_polygon *P, wk_aseg **out,
     *out = NULL;
     *r_out = 0;
     uint32_t r = 0;
-    for (uint32_t i = 0; i < P->n; i++) r += wk_polygon_is_reflex(P, i);
+    for (uint32_t i = 0; i < P->n; i++) r += wk_polygon_is_reflex_counted(R, P, i);
     if (r == 0) return WK_OK;
     wk_aseg *S = WK_NEW_ARRAY(R, wk_aseg, r);
     if (!S) return R->err.code;
@@ -70,7 +70,7 @@ wk_status wk_arrangement_segments(wk_run *R, const wk_polygon *P, wk_aseg **out,
         return st;
     }
     for (uint32_t i = 0, j = 0; i < P->n; i++)
-        if (wk_polygon_is_reflex(P, i)) S[j++].vertex = i;
+        if (wk_polygon_is_reflex_counted(R, P, i)) S[j++].vertex = i;
     int nt = R->opt.threads > 0 ? R->opt.threads : 1;
     /* Each iteration writes only S[j]; sh and P are read-only; R is not
     ** touched.  So the output does not depend on nt or the schedule. */

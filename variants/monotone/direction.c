@@ -136,7 +136,7 @@ wk_status wk_mono_direction(mono *M) {
     /* one good arc per reflex vertex */
     uint32_t n_ev = 0, covering0 = 0;
     for (uint32_t i = 0; i < n; i++) {
-        if (!wk_polygon_is_reflex(P, i)) continue;
+        if (!wk_polygon_is_reflex_counted(R, P, i)) continue;
         r++;
         wk_point pi = P->p[i], pp = P->p[(i + n - 1) % n], pn = P->p[(i + 1) % n];
         wk_point u1 = {pp.x - pi.x, pp.y - pi.y}, u2 = {pn.x - pi.x, pn.y - pi.y};
