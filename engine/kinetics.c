@@ -11,20 +11,8 @@
 
 #include <math.h>
 
-/* Two edge directions of the same sense whose sine is below this are
-** parallel (a straight or collinear vertex, not a regular one).  1e-12 was
-** too small: runs of collinear vertices turned by a random angle or moved far
-** from the origin come out with sines of 1e-12..1e-11, and a regular vertex
-** between two such edges of different weight moves at 10^11 times their
-** speed, which broke the wavefront ("unresolved spike", cycles of two
-** vertices, nodes off their lines) on 32 of 35 such failures of the
-** reference; as collinear vertices the collinear rule takes them, as it
-** does exactly collinear ones (tests/test_degenerate.py: sweep-direction
-** polygons with equal-x chains, turned in random directions).  Opposite senses (antiparallel: a spike) keep the
-** old bar WK_ANTIPARALLEL_SIN: at 1e-9, seven small turned grid polygons
-** that passed before failed with "antiparallel wavefront vertex". */
-#define WK_PARALLEL_SIN 1e-9
-#define WK_ANTIPARALLEL_SIN 1e-12
+/* The parallel bars WK_PARALLEL_SIN and WK_ANTIPARALLEL_SIN, and why they
+** differ, are in tolerance.h. */
 
 void wk_offset_line_of_points(wk_point a, wk_point b, double w, wk_offset_line *L) {
     double dx = b.x - a.x, dy = b.y - a.y;
@@ -101,7 +89,7 @@ bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
                  m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                  m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     double scale = (a->w + b->w + c->w);
-    if (!(fabs(det) > 1e-9 * scale)) return false;
+    if (!(fabs(det) > WK_MEET_DET_REL * scale)) return false;
     double dx = r[0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
                 m[0][1] * (r[1] * m[2][2] - m[1][2] * r[2]) +
                 m[0][2] * (r[1] * m[2][1] - m[1][1] * r[2]);

@@ -9,17 +9,27 @@
 **
 **   (a) input nodes: S->n_input == P->n, S->n_nodes >= n, and node i < n is
 **       input vertex i exactly (same doubles) with t == 0.
-**   (b) other nodes: x, y, t finite, t > 0, and the point inside P or within
-**       tol of its boundary.
+**   (b) other nodes: x, y, t finite, the point inside P or within tol of its
+**       boundary, and t > 0, or |t| <= tol_t = tol / wmax with the point
+**       within tol of the boundary: the trace of a feature below the
+**       tolerance (an edge of 1e-16, a vertex off a line by 1e-12), resolved
+**       at t = 0 within the time tolerance (tolerance.h).
 **   (c) arcs: node ids < n_nodes, a != b; face ids < n, left != right; at
 **       both ends v and for both faces e, |d_e(v) - w(e) t_v| <= tol, where
 **       d_e is the signed distance from the supporting line of edge e,
 **       positive inside (the wavefront of e reaches v at time t_v).
 **   (d) tree: every node is on an arc, no arc closes a cycle, all nodes are
-**       connected (hence arcs == nodes - 1).  An input vertex has degree 1,
-**       or 2 when one of its arcs runs to an adjacent input vertex: an edge
-**       removed at t = 0 by the collinear rule (parallel edges of different
-**       weight meeting collinearly) is traced by an arc along it.
+**       connected (hence arcs == nodes - 1).  At most one arc at an input
+**       vertex leaves the boundary (its other end has t > tol_t): one
+**       wavefront vertex starts there.  The others (any number) run at
+**       t ~ 0: an edge swept at t = 0 by the collinear rule is traced by an
+**       arc along it, and a corner between two swept edges has one arc along
+**       each besides its bisector; a sub-tolerance feature leaves arcs at
+**       t ~ 0 too.  Why no more is asked: going round an input vertex v
+**       inside P, the faces met are face(e_out) first and face(e_in) last;
+**       by (c) at t = 0 every face met in between belongs to an edge whose
+**       line passes through v, and (e) and (f) forbid a face to be met twice,
+**       so the arcs at v are what the faces make them, whatever their number.
 **   (e) faces: for every edge e the arcs labelled e form the path of
 **       wk_face_cycle (no branch, no dead end, no loop, no stray arc); the
 **       face's signed area (xy projection) is >= -tol * scale; the face
@@ -164,7 +174,7 @@ static wk_status grid_build(wk_run *R, grid *G, const wk_point *pts, uint32_t k,
     G->ny = (uint32_t)(H / s) + 1;
     G->n_cells = (size_t)G->nx * G->ny;
     /* Rounding in grid_side is relative to the coordinates' magnitude. */
-    G->margin = 1e-6 * s + 8 * DBL_EPSILON * (fabs(xmin) + fabs(ymin) + W + H);
+    G->margin = WK_PIP_MARGIN_REL * s + 8 * DBL_EPSILON * (fabs(xmin) + fabs(ymin) + W + H);
     G->start = WK_NEW_ARRAY(R, uint32_t, G->n_cells + 1);
     if (!G->start) return R->err.code;
     size_t total = 0;
@@ -350,18 +360,27 @@ static wk_status check_input_nodes(wk_run *R, const wk_polygon *P, const wk_skel
     return WK_OK;
 }
 
+/* The validator's time tolerance: tol / wmax. */
+static double time_tol(const wk_polygon *P, double tol) {
+    double wmax = 0;
+    for (uint32_t i = 0; i < P->n; i++) wmax = fmax(wmax, P->w[i]);
+    return wmax > 0 ? tol / wmax : tol;
+}
+
 static wk_status check_nodes(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol) {
+    double tol_t = time_tol(P, tol);
     for (uint32_t j = P->n; j < S->n_nodes; j++) {
         const wk_node *v = &S->nodes[j];
         if (!isfinite(v->x) || !isfinite(v->y) || !isfinite(v->t))
             return WK_FAIL(R, WK_EINVALID, P->name, 0,
                            "validate (b): node %u is (%g, %g) at t = %g: not finite", j, v->x,
                            v->y, v->t);
-        if (!(v->t > 0))
+        if (!(v->t > 0) && !(fabs(v->t) <= tol_t))
             return WK_FAIL(R, WK_EINVALID, P->name, 0,
                            "validate (b): node %u at (%.17g, %.17g) has t = %.17g; only input "
-                           "vertices may have t <= 0",
-                           j, v->x, v->y, v->t);
+                           "vertices may have t <= 0 (or traces of sub-tolerance features, "
+                           "|t| <= %.3g)",
+                           j, v->x, v->y, v->t, tol_t);
     }
     if (S->n_nodes == P->n) return WK_OK;
     pip Q;
@@ -369,10 +388,16 @@ static wk_status check_nodes(wk_run *R, const wk_polygon *P, const wk_skeleton *
     wk_status st = WK_OK;
     for (uint32_t j = P->n; j < S->n_nodes && st == WK_OK; j++) {
         wk_point z = {S->nodes[j].x, S->nodes[j].y};
-        if (!pip_inside(&Q, z) && !pip_near(&Q, z, tol))
+        bool near = pip_near(&Q, z, tol);
+        if (!pip_inside(&Q, z) && !near)
             st = WK_FAIL(R, WK_EINVALID, P->name, 0,
                          "validate (b): node %u at (%.17g, %.17g), t = %.17g, lies outside the "
                          "polygon (farther than tol = %.3g from its boundary)",
+                         j, z.x, z.y, S->nodes[j].t, tol);
+        else if (!(S->nodes[j].t > 0) && !near)
+            st = WK_FAIL(R, WK_EINVALID, P->name, 0,
+                         "validate (b): node %u at (%.17g, %.17g) has t = %.17g but lies farther "
+                         "than tol = %.3g from the boundary",
                          j, z.x, z.y, S->nodes[j].t, tol);
     }
     pip_clear(R, &Q);
@@ -418,14 +443,11 @@ static uint32_t uf_find(uint32_t *parent, uint32_t v) {
     return v;
 }
 
-static bool adjacent_input(uint32_t u, uint32_t v, uint32_t n) {
-    return u < n && v < n && (next_of(u, n) == v || next_of(v, n) == u);
-}
-
-static wk_status check_tree(wk_run *R, const wk_polygon *P, const wk_skeleton *S) {
+static wk_status check_tree(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol) {
     uint32_t N = S->n_nodes, n = P->n;
+    double tol_t = time_tol(P, tol);
     uint32_t *deg = WK_NEW_ARRAY(R, uint32_t, N);
-    uint32_t *along = deg ? WK_NEW_ARRAY(R, uint32_t, n) : NULL; /* arcs along an edge */
+    uint32_t *along = deg ? WK_NEW_ARRAY(R, uint32_t, n) : NULL; /* arcs leaving the boundary */
     uint32_t *parent = along ? WK_NEW_ARRAY(R, uint32_t, N) : NULL;
     uint32_t *size = parent ? WK_NEW_ARRAY(R, uint32_t, N) : NULL;
     wk_status st = size ? WK_OK : R->err.code;
@@ -434,19 +456,18 @@ static wk_status check_tree(wk_run *R, const wk_polygon *P, const wk_skeleton *S
         const wk_arc *c = &S->arcs[i];
         deg[c->a]++;
         deg[c->b]++;
-        if (adjacent_input(c->a, c->b, n)) {
-            along[c->a]++;
-            along[c->b]++;
-        }
+        /* an arc at input vertex a whose other end b is later than t ~ 0 */
+        if (c->a < n && !(fabs(S->nodes[c->b].t) <= tol_t)) along[c->a]++;
+        if (c->b < n && !(fabs(S->nodes[c->a].t) <= tol_t)) along[c->b]++;
     }
     for (uint32_t v = 0; v < N && st == WK_OK; v++) {
         if (deg[v] == 0)
             st = WK_FAIL(R, WK_EINVALID, P->name, 0, "validate (d): node %u is on no arc", v);
-        else if (v < n && deg[v] > 1 && !(deg[v] == 2 && along[v] > 0))
+        else if (v < n && along[v] > 1)
             st = WK_FAIL(R, WK_EINVALID, P->name, 0,
-                         "validate (d): input vertex %u has %u arcs; it must have 1, or 2 when "
-                         "one runs along an edge to an adjacent input vertex",
-                         v, deg[v]);
+                         "validate (d): input vertex %u has %u arcs that leave the boundary (to "
+                         "nodes later than t = %.3g); one wavefront vertex starts there",
+                         v, along[v], tol_t);
     }
     if (st != WK_OK) goto done;
     for (uint32_t v = 0; v < N; v++) {
@@ -503,11 +524,11 @@ static wk_status check_face_areas(wk_run *R, const wk_polygon *P, const wk_skele
         sum += a;
     }
     *area_err = fabs(sum - total);
-    if (!(*area_err <= 1e-6 * fabs(total)))
+    if (!(*area_err <= WK_VALIDATE_AREA_REL * fabs(total)))
         return WK_FAIL(R, WK_EINVALID, P->name, 0,
                        "validate (e): the face areas sum to %.17g, the polygon's area is %.17g "
-                       "(relative error %.3g > 1e-6)",
-                       sum, total, *area_err / fabs(total));
+                       "(relative error %.3g > %g)",
+                       sum, total, *area_err / fabs(total), WK_VALIDATE_AREA_REL);
     return WK_OK;
 }
 
@@ -578,7 +599,7 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
     if (!at_boundary && lab > F->tol && lcd > F->tol) {
         double mag = fmax(fmax(fmax(fabs(a.x), fabs(a.y)), fmax(fabs(b.x), fabs(b.y))),
                           fmax(fmax(fabs(c.x), fabs(c.y)), fmax(fabs(d.x), fabs(d.y))));
-        double ftol = fmin(64.0 * DBL_EPSILON * mag, 1e-3 * F->tol);
+        double ftol = fmin(WK_FOLD_ULPS * DBL_EPSILON * mag, WK_FOLD_TOL_CAP * F->tol);
         bool ab_long = lab >= lcd;
         wk_point p = ab_long ? a : c, q = ab_long ? b : d;
         wk_point u = ab_long ? c : a, v = ab_long ? d : b;
@@ -678,11 +699,11 @@ wk_status wk_validate(wk_run *R, const wk_polygon *P, const wk_skeleton *S, doub
     memset(rep, 0, sizeof *rep);
     rep->nodes = S->n_nodes;
     rep->arcs = S->n_arcs;
-    if (!(tol > 0)) tol = 1e-6 * wk_polygon_scale(P);
+    if (!(tol > 0)) tol = WK_VALIDATE_TOL_REL * wk_polygon_scale(P);
 
     if (check_input_nodes(R, P, S) != WK_OK || check_nodes(R, P, S, tol) != WK_OK ||
         check_arcs(R, P, S, tol, &rep->max_distance_error) != WK_OK ||
-        check_tree(R, P, S) != WK_OK)
+        check_tree(R, P, S, tol) != WK_OK)
         return R->err.code;
     wk_faces F;
     if (wk_faces_build(R, P, S, &F, "validate (e): ") != WK_OK) return R->err.code;

@@ -101,7 +101,9 @@ static void refine(const wk_wavefront *W, const wk_wf_vertex *V, uint32_t e1, ui
     double tq;
     if (!wk_three_lines_meet(&W->L[e1], &W->L[e2], &W->L[e3], &q, &tq)) return;
     double speed = fabs(V->vel.x) + fabs(V->vel.y);
-    if (fabs(tq - *t) > 16 * W->eps_t || wf_dist2(q, *p) > 256 * W->eps_d * W->eps_d * (1 + speed * speed))
+    double dslack = WK_REFINE_DIST_SLACK * W->eps_d;
+    if (fabs(tq - *t) > WK_REFINE_TIME_SLACK * W->eps_t ||
+        wf_dist2(q, *p) > dslack * dslack * (1 + speed * speed))
         return;
     if (tq < W->t_now) tq = W->t_now;
     *t = tq;
@@ -144,7 +146,7 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     const wk_wf_vertex *B = &W->v[b];
     const wk_offset_line *L = &W->L[A->eout];
     double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
-    if (rate >= -1e-12 * (L->w + fabs(V->vel.x) + fabs(V->vel.y))) return;
+    if (rate >= -WK_APPROACH_REL * (L->w + fabs(V->vel.x) + fabs(V->vel.y))) return;
     wk_point pv = wk_wf_pos(V, W->t_now);
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
@@ -311,7 +313,7 @@ static wk_status check_invariants(wk_wavefront *W) {
             return WK_FAIL(R, WK_EALGO, name, 0, "invariant: vertex %u's cycle is broken at t = %.17g", v, t);
         wk_point p = wk_wf_pos(V, t);
         double speed = fabs(V->vel.x) + fabs(V->vel.y);
-        double tol = 1e3 * (W->eps_d + speed * W->eps_t) * (1 + t);
+        double tol = WK_INVARIANT_SLACK * (W->eps_d + speed * W->eps_t) * (1 + t);
         double din = fabs(wk_offset_distance(&W->L[V->ein], p, t));
         double dout = fabs(wk_offset_distance(&W->L[V->eout], p, t));
         if (V->vkind != WK_VEL_ANTIPARALLEL && (din > tol || dout > tol))
@@ -424,11 +426,8 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
     double wmax = 0;
     for (uint32_t i = 0; i < P->n; i++) wmax = P->w[i] > wmax ? P->w[i] : wmax;
     W.eps_d = WK_TOL_REL * wk_polygon_scale(P);
-    /* Simultaneous means equal up to the rounding of a constructed time
-    ** (~1e-15 relative); a looser window would merge events that happen in
-    ** sequence, and fast vertices move far in between (a vertex of speed s
-    ** covers s * eps_t). */
-    W.eps_t = 1e-3 * W.eps_d / wmax;
+    /* tolerance.h: eps_d and eps_t */
+    W.eps_t = WK_TOL_TIME * W.eps_d / wmax;
     wk_status st = WK_OK;
     W.L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
     if (!W.L) {

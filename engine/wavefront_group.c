@@ -73,8 +73,8 @@ static double angle_of(const wk_offset_line *L, bool incoming) {
 /* Clockwise turn from angle a to angle b in (0, 2 pi]. */
 static double cw_turn(double a, double b) {
     double d = a - b;
-    while (d <= 1e-13) d += TWO_PI;
-    while (d > TWO_PI + 1e-13) d -= TWO_PI;
+    while (d <= WK_ANGLE_WRAP) d += TWO_PI;
+    while (d > TWO_PI + WK_ANGLE_WRAP) d -= TWO_PI;
     return d;
 }
 
@@ -261,6 +261,32 @@ static void plan_arrivals(wk_wavefront *W, double t) {
         if (u->at == WK_NONE) u->at = find_cluster(W, u->ev_p);
         if (u->ev_kind == WK_WF_EDGE && W->v[u->next].at == WK_NONE) W->v[u->next].at = u->at;
     }
+}
+
+/* A local walk (collect_local) is enough only if the group stays inside
+** it: the pieces that enter the walk from outside (outside vertex -> first
+** vertex of a stretch) are not part of the plan, so the first vertex of a
+** stretch must not arrive at a node, and no node may lie on such a piece.
+** Near-degenerate inputs break that (a regular 24-gon with one coordinate
+** moved by 1e-12: all 24 vertices meet within eps_d of the centre, but the
+** events come one by one, eps_t apart). */
+static bool local_walk_suffices(const wk_wavefront *W, double t) {
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        const wk_wf_vertex *c = &W->v[W->comp[i]];
+        const wk_wf_vertex *o = &W->v[c->prev];
+        if (o->seen == W->stamp) continue; /* not the first of a stretch */
+        if (c->at != WK_NONE) return false;
+        wk_point a = wk_wf_pos(o, t), b = wk_wf_pos(c, t);
+        const wk_offset_line *L = &W->L[o->eout];
+        double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
+        for (uint32_t k = 0; k < W->n_cl; k++) {
+            wk_point q = W->cl[k].p;
+            double s = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
+            double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
+            if (s >= -W->eps_d && s <= len + W->eps_d && fabs(off) <= W->eps_d) return false;
+        }
+    }
+    return true;
 }
 
 /* Step 2b: a node inside a piece cuts it (a pinch). */
@@ -483,7 +509,7 @@ static wk_status plan_force_overlaps(wk_wavefront *W, double t, bool *again) {
                 uint32_t out = W->slot[c->first + m];
                 if (out & NODE_BIT) continue;
                 double d = fabs(a - angle_of(&W->L[W->sub[out].edge], false));
-                if (d > 1e-12 && fabs(d - TWO_PI) > 1e-12) continue;
+                if (d > WK_ANGLE_EQ && fabs(d - TWO_PI) > WK_ANGLE_EQ) continue;
                 wk_point pin = point_pos(W, W->sub[in].from, t);
                 wk_point pout = point_pos(W, W->sub[out].to, t);
                 uint32_t far = wf_dist2(pin, c->p) < wf_dist2(pout, c->p) ? W->sub[in].from : W->sub[out].to;
@@ -535,7 +561,7 @@ static wk_status plan_pairs(wk_wavefront *W, double t, bool *again) {
                 return WK_FAIL(R, WK_EALGO, W->P->name, 0,
                                "wavefront: cannot pair wavefront pieces at (%.17g, %.17g), t = %.17g",
                                c->p.x, c->p.y, t);
-            if (bturn > TWO_PI - 1e-9) {
+            if (bturn > TWO_PI - WK_SPIKE_TURN) {
                 wk_wf_sub *si = &W->sub[in], *so = &W->sub[best];
                 wk_point pin = point_pos(W, si->from, t), pout = point_pos(W, so->to, t);
                 uint32_t far = wf_dist2(pin, c->p) < wf_dist2(pout, c->p) ? si->from : so->to;
@@ -566,6 +592,12 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
     W->n_cl = W->n_pin = W->n_sub = W->n_pair = 0;
     if (plan_nodes(W, t) != WK_OK) return R->err.code;
     plan_arrivals(W, t);
+    if (W->n_seeds == 1 && W->n_forced == 0 && !local_walk_suffices(W, t)) {
+        /* the group reaches beyond the local walk: take whole cycles */
+        W->local_open = false;
+        if (collect_cycles(W) != WK_OK) return R->err.code;
+        plan_arrivals(W, t);
+    }
     if (plan_pinches(W, t) != WK_OK || plan_seed_cuts(W, t) != WK_OK) return R->err.code;
     if (plan_sub_pieces(W) != WK_OK || plan_cancel(W) != WK_OK) return R->err.code;
     if (plan_force_touching(W, t, again) != WK_OK) return R->err.code;
@@ -872,7 +904,7 @@ static wk_status collapse_flat_cycle(wk_wavefront *W, uint32_t f, double t, bool
     *done = false;
     const wk_offset_line *L = &W->L[W->v[f].ein];
     wk_point o = wk_wf_pos(&W->v[f], t);
-    double tol = 1e3 * W->eps_d;
+    double tol = WK_FLAT_CYCLE_SLACK * W->eps_d;
     /* the cycle's places along L's direction (s) and its pieces */
     uint32_t len = 0, u = f;
     do {

@@ -27,6 +27,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "tolerance.h"
+
 #define WK_NONE UINT32_MAX
 #define WK_K_MAX (UINT32_MAX - 1) /* --k max: a variant's cache holds everything */
 
@@ -444,16 +446,8 @@ wk_status wk_skeleton_merge_pass_through(wk_run *R, wk_skeleton *S);
 
 /* ------------------------------------------------------------ tolerance */
 
-/* The one tolerance policy.  Decisions on input (simplicity, orientation,
-** reflexness) are exact.  Constructions are in double; two events are
-** simultaneous when their times differ by at most WK_TOL_REL * scale / wmax
-** and two event points coincide when they are within WK_TOL_REL * scale,
-** where scale is the diagonal of the polygon's bounding box (a vertex moving
-** at speed s also arrives at a point within s times the time tolerance).
-** Doubles carry ~1e-16 relative error, so 1e-9 leaves room for the error of
-** a constructed event while staying far below any feature the validator can
-** see (its default tolerance is 1e-6 * scale). */
-#define WK_TOL_REL 1e-9
+/* The one tolerance policy is tolerance.h (WK_TOL_REL and the others);
+** scale is the diagonal of the polygon's bounding box. */
 double wk_polygon_scale(const wk_polygon *P);
 /* The polygon's bounding box. */
 void wk_polygon_bbox(const wk_polygon *P, wk_point *lo, wk_point *hi);

@@ -93,8 +93,8 @@ wk_status wk_arrangement_count_crossings(wk_run *R, const wk_aseg *segs, uint32_
 
 /* ====================================================== dynamic arrangement */
 
-/* Two unit directions are parallel below this |cross| (see the note). */
-#define WK_ARR_PARALLEL 1e-12
+/* WK_ARR_PARALLEL (tolerance.h): two unit directions are parallel below
+** this |cross| (see the note). */
 
 /* A crossing of the queried segment with another current segment. */
 typedef struct wk_crossing {

@@ -93,7 +93,7 @@ typedef struct ar_state {
 ** parallel. */
 static double lambda_on_line(const ar_seg *S, const wk_offset_line *L, double t) {
     double den = L->nx * S->u.x + L->ny * S->u.y;
-    if (fabs(den) < 1e-12) return NAN;
+    if (fabs(den) < WK_ARR_PARALLEL) return NAN;
     return (L->c + L->w * t - (L->nx * S->o.x + L->ny * S->o.y)) / den;
 }
 
@@ -164,11 +164,13 @@ static double hit_piece(const wk_wavefront *W, const ar_seg *S, uint32_t a, doub
     wk_point pa = wk_wf_position(W, a, t), pb = wk_wf_position(W, b, t);
     double dx = pb.x - pa.x, dy = pb.y - pa.y;
     double den = S->u.x * dy - S->u.y * dx;
-    if (fabs(den) < 1e-300) return INFINITY;
+    if (fabs(den) < WK_DIV_GUARD) return INFINITY;
     double ex = pa.x - S->o.x, ey = pa.y - S->o.y;
     double lam = (ex * dy - ey * dx) / den;
     *mu = (ex * S->u.y - ey * S->u.x) / den;
-    if (*mu < -1e-12 || *mu > 1 + 1e-12 || lam <= lambda0 + wk_wf_eps_d(W) * 1e-3) return INFINITY;
+    if (*mu < -WK_RAY_PIECE_SLACK || *mu > 1 + WK_RAY_PIECE_SLACK ||
+        lam <= lambda0 + wk_wf_eps_d(W) * WK_RAY_AHEAD_REL)
+        return INFINITY;
     return lam;
 }
 
@@ -185,7 +187,7 @@ static uint32_t shoot_at(const wk_wavefront *W, const ar_seg *S, uint32_t v, dou
         if (lam < bl) {
             bl = lam;
             best = a;
-            *at_end = mu < 1e-9 || mu > 1 - 1e-9;
+            *at_end = mu < WK_RAY_END_SNAP || mu > 1 - WK_RAY_END_SNAP;
         }
     }
     return best;
@@ -199,7 +201,7 @@ static uint32_t shoot(const wk_wavefront *W, const ar_seg *S, uint32_t v, double
     bool at_end = false;
     uint32_t a = shoot_at(W, S, v, t, lambda0, &at_end);
     if (a != WK_NONE && at_end) {
-        double later = t + 1e3 * wk_wf_eps_t(W);
+        double later = t + WK_RAY_RESHOOT_DELAY * wk_wf_eps_t(W);
         uint32_t b = shoot_at(W, S, v, later, lambda_of(S, wk_wf_position(W, v, later)), &at_end);
         if (b != WK_NONE) a = b;
     }
@@ -232,7 +234,7 @@ static void seg_event(ar_state *A, wk_wavefront *W, uint32_t si) {
             double ra = sa1 - sa0, rb = sb1 - sb0;
             /* F riding along with an end vertex (that vertex moves on s
             ** itself: head-on reflex vertices) never leaves the piece */
-            double tiny = 1e-10 * (fabs(l1 - l0) + L->w);
+            double tiny = WK_RIDE_ALONG_REL * (fabs(l1 - l0) + L->w);
             if (ra < -tiny) {
                 double te = now + (sa0 > 0 ? sa0 : 0) / -ra;
                 if (te < S->ev_t) S->ev_t = te, S->ev_kind = AR_SWITCH, S->ev_end = 0;
@@ -475,13 +477,13 @@ static bool relocate_locally(ar_state *A, wk_wavefront *W, uint32_t si, double t
             uint32_t a = two[j];
             if (a == S->v || wk_wf_next(W, a) == S->v) continue;
             double lam = hit_piece(W, S, a, t, lv, &mu);
-            if (lam < best && mu > 1e-9 && mu < 1 - 1e-9) {
+            if (lam < best && mu > WK_RAY_END_SNAP && mu < 1 - WK_RAY_END_SNAP) {
                 best = lam;
                 pick = a;
             }
         }
     }
-    if (pick == WK_NONE || !(fabs(best - old) <= 1e3 * wk_wf_eps_d(W))) return false;
+    if (pick == WK_NONE || !(fabs(best - old) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W))) return false;
     unlink_f(A, si);
     link_f(A, W, si, pick);
     return true;

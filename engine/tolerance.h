@@ -1,0 +1,149 @@
+/*
+** tolerance.h: the one tolerance policy of wskel.  Every tolerance the
+** engine and the variants use is named here with the reason for its value;
+** no other file writes a tolerance as a literal.
+**
+** The policy.
+**   - Decisions on input (simplicity, orientation, reflexness, the checks of
+**     the readers) are exact: a float filter with an expansion fallback
+**     (predicates.c).  They need no tolerance.
+**   - Constructions (offset lines, vertex velocities, event times and
+**     points) are in double.  Their error is a few ulps of the coordinates
+**     relative to the polygon's origin (the bounding-box centre), i.e.
+**     about 1e-16 * scale, where scale is the bounding-box diagonal
+**     (wk_polygon_scale), times the conditioning of the construction.
+**   - The simulation works with one distance tolerance
+**     eps_d = WK_TOL_REL * scale and one time tolerance
+**     eps_t = WK_TOL_TIME * eps_d / wmax (wmax the largest weight): two event
+**     points coincide within eps_d; two events are simultaneous within
+**     eps_t (a vertex of speed s moves s * eps_t within it, so "a vertex
+**     arrives at a node" is judged within eps_d + s * eps_t).
+**   - The validator's default tolerance is WK_VALIDATE_TOL_REL * scale, far
+**     above eps_d (what the simulation may leave behind) and far below any
+**     feature a user can see.
+**
+** Features below the tolerance.  A feature shorter than eps_d (an edge of
+** 1e-16, a vertex 1e-12 off a line, a small polygon part next to a vertex
+** 4e9 away) is resolved at tolerance level: its events happen at t within
+** eps_t of the time where the simulation sees them, and it may leave nodes
+** at t = 0 (within the time tolerance) next to the boundary.  The
+** validator accepts such a node when it lies within its tolerance of the
+** boundary and its time is within the validator's time tolerance
+** (tol / wmax) of 0, as long as the distances (c), the tree and faces
+** (d, e) and planarity (f) hold within tolerance: it is the trace of a
+** sub-tolerance feature, not a wrong node.
+*/
+#ifndef WK_TOLERANCE_H
+#define WK_TOLERANCE_H
+
+/* ------------------------------------------------------ the simulation */
+
+/* eps_d = WK_TOL_REL * scale.  Doubles carry ~1e-16 relative error and the
+** worst-conditioned construction the engine keeps (a vertex between edges
+** meeting at a sine just above WK_PARALLEL_SIN) loses up to 1e-9 of that
+** again; 1e-9 leaves room for the error of a constructed event while staying
+** 1000 times below the validator's default (WK_VALIDATE_TOL_REL). */
+#define WK_TOL_REL 1e-9
+/* eps_t = WK_TOL_TIME * eps_d / wmax.  Simultaneous means equal up to the
+** rounding of a constructed time (~1e-15 relative); a window as wide as
+** eps_d / wmax would merge events that happen in sequence, and fast
+** vertices move far in between (a vertex of speed s covers s * eps_t). */
+#define WK_TOL_TIME 1e-3
+/* Two edges whose unit directions have |sin| below this and the same sense
+** are parallel: the vertex between them is straight (equal weights) or
+** collinear (different weights: the collinear rule takes it).  Between two
+** edges of different weight at sine s the vertex moves at ~1/s; at 1e-12 it
+** moved at 10^11 times their speed and broke the wavefront ("unresolved
+** spike", cycles of two vertices, nodes off their lines) on 32 of 35 such
+** failures of the reference (tests/test_degenerate.py: sweep-direction
+** polygons with equal-x chains, turned in random directions). */
+#define WK_PARALLEL_SIN 1e-9
+/* Opposite senses (antiparallel edges: a zero-width spike) keep the old
+** bar: at 1e-9, seven small turned grid polygons that passed before failed
+** with "antiparallel wavefront vertex". */
+#define WK_ANTIPARALLEL_SIN 1e-12
+/* The three-lines system of an event (kinetics.c) is solved exactly only
+** when |det| exceeds this times the sum of the weights: below, the lines
+** are nearly dependent and the kinematic estimate is better. */
+#define WK_MEET_DET_REL 1e-9
+/* A refined event replaces the kinematic estimate only when it agrees with
+** it within these multiples of eps_t and eps_d (the estimate's own error is
+** a few eps at most; beyond that the refinement solved a different event). */
+#define WK_REFINE_TIME_SLACK 16.0
+#define WK_REFINE_DIST_SLACK 16.0
+/* A reflex vertex approaching an offset line slower than this times its
+** speed (plus the line's) is moving parallel to it: no split. */
+#define WK_APPROACH_REL 1e-12
+/* Angles (radians) in the pairing of a group: two directions are equal
+** within WK_ANGLE_EQ (unit-vector rounding is ~1e-16; 1e-12 allows the
+** atan2 of constructed directions); a clockwise turn wraps at WK_ANGLE_WRAP
+** (so an exact 0 turn counts as a full turn); a turn within WK_SPIKE_TURN
+** of 2 pi is a zero-width spike. */
+#define WK_ANGLE_EQ 1e-12
+#define WK_ANGLE_WRAP 1e-13
+#define WK_SPIKE_TURN 1e-9
+/* A cycle is flat (collapse_flat_cycle) when all its vertices lie within
+** this many eps_d of one line: the group resolution, working with nodes
+** eps_d apart, can leave such a cycle up to a few hundred eps_d thin. */
+#define WK_FLAT_CYCLE_SLACK 1e3
+/* --check-invariants: a vertex lies on its edges' offset lines within this
+** many (eps_d + speed * eps_t), times (1 + t) for the growth of rounding with
+** time: generous on purpose, it looks for broken invariants, not rounding. */
+#define WK_INVARIANT_SLACK 1e3
+
+/* ------------------------------------------------------- the validator */
+
+/* Default distance tolerance: WK_VALIDATE_TOL_REL * scale (a caller may
+** pass another).  1000 times eps_d: what the simulation leaves behind is
+** far inside it. */
+#define WK_VALIDATE_TOL_REL 1e-6
+/* The face areas must sum to the polygon's area within this relative error
+** (each face's area is a shoelace sum over nodes constructed to ~eps_d). */
+#define WK_VALIDATE_AREA_REL 1e-6
+/* Planarity: two sides collinear within WK_FOLD_ULPS ulps of the
+** coordinates that overlap are a fold even where exact tests see them only
+** touch; the bar is rounding, capped at WK_FOLD_TOL_CAP * tol, not tol:
+** legitimate faces can be far thinner than tol (a triangle with weights 1,
+** 1000, 0.001: 1e-6 wide at 1000; long faces 1e-3 wide in 10^6-vertex
+** polygons; a 2e-3 polygon at 1e6 from the origin: faces 1e-8 wide, where
+** 64 ulp is 1.4e-8). */
+#define WK_FOLD_ULPS 64.0
+#define WK_FOLD_TOL_CAP 1e-3
+/* The point-in-polygon grid widens its cells by this fraction of a cell
+** (plus the rounding of the coordinates) so that no edge near a cell border
+** is missed. */
+#define WK_PIP_MARGIN_REL 1e-6
+
+/* ------------------------------------------------- search structures */
+
+/* Two unit directions are parallel below this |cross| in the arrangement's
+** crossing queries (the sine of WK_ANTIPARALLEL_SIN: collinear overlaps are
+** not crossings). */
+#define WK_ARR_PARALLEL 1e-12
+
+/* ------------------------------- rays against a moving wavefront (finders) */
+
+/* A static ray hits a wavefront piece when its parameter along the piece
+** is in [-WK_RAY_PIECE_SLACK, 1 + WK_RAY_PIECE_SLACK] (rounding of the
+** crossing), at least WK_RAY_AHEAD_REL * eps_d ahead of its origin (so a ray
+** does not hit the piece it starts on). */
+#define WK_RAY_PIECE_SLACK 1e-12
+#define WK_RAY_AHEAD_REL 1e-3
+/* A hit within WK_RAY_END_SNAP of a piece's end (as a fraction of the piece)
+** is at the end vertex: ambiguous, the ray is shot again
+** WK_RAY_RESHOOT_DELAY * eps_t later, when the vertex has moved off it. */
+#define WK_RAY_END_SNAP 1e-9
+#define WK_RAY_RESHOOT_DELAY 1e3
+/* A point moving on a ray that rides along with a wavefront vertex (the
+** vertex moves on the ray itself: head-on reflex vertices) never leaves its
+** piece: their relative rate is zero within this times their speeds. */
+#define WK_RIDE_ALONG_REL 1e-10
+/* After a group, a point on a ray is put on a new piece at the same place
+** when the two places agree within WK_RELOCATE_SLACK * eps_d (the group
+** moved nothing by more than a few eps_d), else the ray is shot again. */
+#define WK_RELOCATE_SLACK 1e3
+/* Below this |denominator| a line-line intersection is not formed (the
+** lines are parallel to the last bits; the quotient would overflow). */
+#define WK_DIV_GUARD 1e-300
+
+#endif
