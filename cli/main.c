@@ -35,6 +35,8 @@ static const char usage_text[] =
     "  --check            validate the skeleton, exit 3 and no output if invalid\n"
     "                     (the default; --stats prints the validator's figures)\n"
     "  --no-check         skip the validation (huge inputs, timing runs)\n"
+    "  --check-tol REL    the validator's tolerance as a fraction of the bounding-box\n"
+    "                     diagonal (default 1e-6; smaller is stricter)\n"
     "  --stats            print counters, time and peak tracked bytes to stderr\n"
     "  --collinear RULE   parallel edges of different weight meeting collinearly:\n"
     "                     'lower' (default, the lower weight edge survives, as in\n"
@@ -97,6 +99,7 @@ int main(int argc, char **argv) {
     const char *offsets_arg = NULL;
     bool check = true, stats = false, k_given = false, verbose = false, list_counters = false;
     bool check_invariants = false;
+    double check_tol = WK_VALIDATE_TOL_REL;
     uint32_t k = 1;
     wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
     int threads = 1;
@@ -154,6 +157,14 @@ int main(int argc, char **argv) {
             check = true;
         } else if (!strcmp(a, "--no-check")) {
             check = false;
+        } else if (!strcmp(a, "--check-tol")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            char *end;
+            errno = 0;
+            check_tol = strtod(v, &end);
+            if (end == v || *end || errno || !(check_tol > 0) || !(check_tol < 1))
+                return usage_error("--check-tol must be a number in (0, 1) (got '%s')", v);
         } else if (!strcmp(a, "--stats")) {
             stats = true;
         } else if (!strcmp(a, "--collinear")) {
@@ -230,7 +241,7 @@ int main(int argc, char **argv) {
     }
     if (check) {
         wk_validate_report rep;
-        if (wk_validate(&R, P, S, 0, &rep) != WK_OK) {
+        if (wk_validate(&R, P, S, check_tol * wk_polygon_scale(P), &rep) != WK_OK) {
             rc = report(&R, verbose);
             goto done;
         }

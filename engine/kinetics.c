@@ -27,6 +27,19 @@ void wk_offset_line_of_points(wk_point a, wk_point b, double w, wk_offset_line *
     L->w = w;
 }
 
+void wk_offset_line_of_edge_at(const wk_polygon *P, uint32_t e, wk_point o, wk_offset_line *L) {
+    wk_point a = P->p[e], b = P->p[(e + 1) % P->n];
+    double dx = b.x - a.x, dy = b.y - a.y;
+    double len = hypot(dx, dy);
+    L->ux = dx / len;
+    L->uy = dy / len;
+    L->nx = -L->uy;
+    L->ny = L->ux;
+    double mx = 0.5 * ((a.x - o.x) + (b.x - o.x)), my = 0.5 * ((a.y - o.y) + (b.y - o.y));
+    L->c = L->nx * mx + L->ny * my;
+    L->w = P->w[e];
+}
+
 void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L) {
     wk_offset_line_of_points(P->p[e], P->p[(e + 1) % P->n], P->w[e], L);
 }

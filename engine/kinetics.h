@@ -32,6 +32,12 @@ typedef enum wk_velocity_kind {
 void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L);
 /* The same for the edge a -> b of weight w (e.g. in translated coordinates). */
 void wk_offset_line_of_points(wk_point a, wk_point b, double w, wk_offset_line *L);
+/* Edge e's offset line in coordinates relative to o (the wavefront's
+** frame): the direction from the input coordinates (b - a of two nearby
+** doubles is exact, and never 0 for distinct vertices, where (b - o) -
+** (a - o) can round to 0: an edge of one ulp), c from the translated
+** midpoint. */
+void wk_offset_line_of_edge_at(const wk_polygon *P, uint32_t e, wk_point o, wk_offset_line *L);
 /* The centre of P's bounding box.  Variants compute in coordinates relative
 ** to it: far from the origin (a map in UTM metres, say) the absolute
 ** rounding of each coordinate would otherwise swamp small features. */

@@ -26,6 +26,7 @@
 ** complete on degenerate inputs).  It is not Bentley-Ottmann: it stops at
 ** the first intersection it finds, which need not be the leftmost.
 */
+#include "kinetics.h"
 #include "wskel.h"
 
 #include <errno.h>
@@ -476,6 +477,33 @@ bool wk_polygon_is_reflex_counted(wk_run *R, const wk_polygon *P, uint32_t i) {
     return wk_orient2d_counted(R, P->p[prev_of(i, n)], P->p[i], P->p[next_of(i, n)]) < 0;
 }
 
+/* The input domain's angle bound: a vertex whose two edges are antiparallel
+** to WK_ANTIPARALLEL_SIN (tolerance.h) is a needle (a spike, or a crack of
+** interior angle near 2 pi) that the wavefront cannot resolve in doubles: its
+** vertex would move at 1 / sin times the edges' speed.  Decided exactly as
+** the wavefront will (the same offset lines, relative to the same origin),
+** so a polygon accepted here never fails with "input vertex is a spike".
+** i is a stored vertex; messages name the input vertex. */
+static wk_status check_needles(wk_run *R, const wk_polygon *P, const long *lines) {
+    uint32_t n = P->n;
+    wk_point o = wk_polygon_centre(P);
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t h = prev_of(i, n);
+        wk_offset_line a, b;
+        wk_offset_line_of_edge_at(P, h, o, &a);
+        wk_offset_line_of_edge_at(P, i, o, &b);
+        wk_point v;
+        if (wk_vertex_velocity(&a, &b, &v) != WK_VEL_ANTIPARALLEL) continue;
+        uint32_t in = P->input_index[i];
+        double sine = fabs(a.ux * b.uy - a.uy * b.ux);
+        return WK_FAIL(R, WK_EINPUT, P->name, line_of(lines, in),
+                       "vertex %u is a needle: its edges are antiparallel to a sine of %.3g, below "
+                       "the %g the wavefront resolves (input domain, see README)",
+                       in, sine, WK_ANTIPARALLEL_SIN);
+    }
+    return WK_OK;
+}
+
 /* ---- construction ---- */
 
 wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const double *y,
@@ -536,6 +564,7 @@ wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const d
                      "polygon area underflows (computed %g): coordinates too small", area);
         goto fail;
     }
+    if ((st = check_needles(R, P, lines)) != WK_OK) goto fail;
     P->r = 0;
     for (uint32_t i = 0; i < n; i++) P->r += wk_polygon_is_reflex_counted(R, P, i);
     *out = P;
@@ -558,6 +587,7 @@ wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P) {
         return st;
     if (orientation(R, P->p, n) < 0)
         return WK_FAIL(R, WK_EINPUT, name, 0, "polygon is stored clockwise");
+    if ((st = check_needles(R, P, NULL)) != WK_OK) return st;
     uint32_t r = 0;
     for (uint32_t i = 0; i < n; i++) r += wk_polygon_is_reflex_counted(R, P, i);
     if (r != P->r)

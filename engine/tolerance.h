@@ -82,6 +82,16 @@
 #define WK_ANGLE_EQ 1e-12
 #define WK_ANGLE_WRAP 1e-13
 #define WK_SPIKE_TURN 1e-9
+/* Pieces of two different edges may cancel between two nodes (leaving an
+** arc) only when the edges are antiparallel to this sine; beyond it the two
+** nodes are one point seen at too fine a scale.  Loose on purpose: pieces
+** 1e-3 apart in direction that cancel over a length L diverge by 1e-3 L,
+** so they are a sub-tolerance picture whenever the nodes could be merged. */
+#define WK_CANCEL_SIN 1e-3
+/* A group that cannot be planned consistently with nodes eps_d wide is
+** planned again with the radius doubled, up to this many eps_d (256 eps_d
+** is still 4 times below the validator's default tolerance). */
+#define WK_GROUP_WIDEN_MAX 256.0
 /* A cycle is flat (collapse_flat_cycle) when all its vertices lie within
 ** this many eps_d of one line: the group resolution, working with nodes
 ** eps_d apart, can leave such a cycle up to a few hundred eps_d thin. */

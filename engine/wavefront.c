@@ -51,6 +51,13 @@ uint32_t wf_new_vertex(wk_wavefront *W, uint32_t ein, uint32_t eout, wk_point p,
     bool reflex;
     x->vkind = (uint8_t)wk_vertex_start(W->L, ein, eout, p, t, W->eps_d, &x->p0, &x->vel, &reflex);
     x->reflex = reflex;
+    /* A non-finite vertex would poison every later comparison (a NaN is
+    ** never within tolerance of anything: groups would grow without end). */
+    if (!isfinite(x->p0.x) || !isfinite(x->p0.y) || !isfinite(x->vel.x) || !isfinite(x->vel.y)) {
+        WK_FAIL(W->R, WK_EALGO, W->P->name, 0,
+                "wavefront: vertex between edges %u and %u at t = %.17g is not finite", ein, eout, t);
+        return WK_NONE;
+    }
     return id;
 }
 
@@ -428,6 +435,7 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
     W.eps_d = WK_TOL_REL * wk_polygon_scale(P);
     /* tolerance.h: eps_d and eps_t */
     W.eps_t = WK_TOL_TIME * W.eps_d / wmax;
+    W.eps_g = W.eps_d;
     wk_status st = WK_OK;
     W.L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
     if (!W.L) {
@@ -435,11 +443,7 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
         goto done;
     }
     W.origin = wk_polygon_centre(P);
-    for (uint32_t i = 0; i < P->n; i++) {
-        const wk_point *a = &P->p[i], *b = &P->p[(i + 1) % P->n];
-        wk_offset_line_of_points((wk_point){a->x - W.origin.x, a->y - W.origin.y},
-                                 (wk_point){b->x - W.origin.x, b->y - W.origin.y}, P->w[i], &W.L[i]);
-    }
+    for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge_at(P, i, W.origin, &W.L[i]);
     if ((st = wk_skeleton_new(R, P, &W.S)) != WK_OK) goto done;
     st = simulate(&W);
     if (st == WK_OK) st = wk_skeleton_merge_pass_through(R, W.S);

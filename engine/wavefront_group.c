@@ -49,7 +49,7 @@ static uint32_t find_cluster_within(const wk_wavefront *W, wk_point p, double r)
 }
 
 static uint32_t find_cluster(const wk_wavefront *W, wk_point p) {
-    double e2 = W->eps_d * W->eps_d;
+    double e2 = W->eps_g * W->eps_g;
     for (uint32_t k = 0; k < W->n_cl; k++)
         if (wf_dist2(W->cl[k].p, p) <= e2) return k;
     return WK_NONE;
@@ -246,7 +246,7 @@ static void plan_arrivals(wk_wavefront *W, double t) {
         /* within the time tolerance a vertex covers |vel| eps_t: a fast
         ** vertex that close to a node arrives there in the same instant */
         double speed = fabs(u->vel.x) + fabs(u->vel.y);
-        u->at = find_cluster_within(W, wk_wf_pos(u, t), W->eps_d + speed * W->eps_t);
+        u->at = find_cluster_within(W, wk_wf_pos(u, t), W->eps_g + speed * W->eps_t * (W->eps_g / W->eps_d));
     }
     /* a free vertex whose two neighbours arrive at the same node closes a
     ** triangle of zero size with it: it arrives too */
@@ -283,7 +283,7 @@ static bool local_walk_suffices(const wk_wavefront *W, double t) {
             wk_point q = W->cl[k].p;
             double s = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
-            if (s >= -W->eps_d && s <= len + W->eps_d && fabs(off) <= W->eps_d) return false;
+            if (s >= -W->eps_g && s <= len + W->eps_g && fabs(off) <= W->eps_g) return false;
         }
     }
     return true;
@@ -305,17 +305,17 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
             if (k == A->at || k == B->at) continue;
             wk_point q = W->cl[k].p;
             double s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
-            if (s < -W->eps_d || s > len + W->eps_d) continue;
+            if (s < -W->eps_g || s > len + W->eps_g) continue;
             double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
-            if (fabs(off) > W->eps_d) continue;
+            if (fabs(off) > W->eps_g) continue;
             /* A node on the line within tolerance of an end of the piece: that
             ** end arrives at the node (else the node would touch the piece
             ** without cutting it, and the group would change nothing). */
-            if (s <= W->eps_d) {
+            if (s <= W->eps_g) {
                 if (A->at == WK_NONE) W->v[a].at = k;
                 continue;
             }
-            if (s >= len - W->eps_d) {
+            if (s >= len - W->eps_g) {
                 if (B->at == WK_NONE) W->v[A->next].at = k;
                 continue;
             }
@@ -350,9 +350,9 @@ static wk_status plan_seed_cuts(wk_wavefront *W, double t) {
         wk_point q = W->cl[k].p;
         double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
         double sq = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
-        if (sq <= W->eps_d) {
+        if (sq <= W->eps_g) {
             W->v[a].at = k;
-        } else if (sq >= len - W->eps_d) {
+        } else if (sq >= len - W->eps_g) {
             W->v[A->next].at = k;
         } else {
             if (WK_GROW(R, W->pin, W->cap_pin, W->n_pin + 1) != WK_OK) return R->err.code;
@@ -408,6 +408,18 @@ static wk_status plan_cancel(wk_wavefront *W) {
         for (uint32_t j = i + 1; j < W->n_slot && cmp_sub_key(W, W->slot[i], W->slot[j]) == 0; j++) {
             wk_wf_sub *b = &W->sub[W->slot[j]];
             if (!b->dead && b->from == a->to && b->to == a->from) {
+                /* Only antiparallel pieces can cancel between two distinct
+                ** nodes (parallel edges meeting).  Non-parallel ones doing so
+                ** mean the two nodes are one point seen at too fine a scale
+                ** (a skeleton feature below eps_d next to a sub-tolerance
+                ** input feature): the group is planned again, coarser. */
+                const wk_offset_line *La = &W->L[a->edge], *Lb = &W->L[b->edge];
+                if (a->edge != b->edge && (La->ux * Lb->ux + La->uy * Lb->uy > 0 ||
+                                           fabs(La->ux * Lb->uy - La->uy * Lb->ux) > WK_CANCEL_SIN))
+                    return WK_FAIL(R, WK_EALGO, W->P->name, 0,
+                                   "wavefront: pieces of non-parallel edges %u and %u cancel between "
+                                   "two nodes",
+                                   a->edge, b->edge);
                 /* 2: cancelled, leaves an arc; 1: one edge folded onto
                 ** itself within tolerance, which traces nothing */
                 a->dead = b->dead = a->edge == b->edge ? 1 : 2;
@@ -450,7 +462,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
             wk_point q = wk_wf_pos(u, t);
             double sq = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
-            if (sq <= -W->eps_d || sq >= len + W->eps_d || fabs(off) > W->eps_d) continue;
+            if (sq <= -W->eps_g || sq >= len + W->eps_g || fabs(off) > W->eps_g) continue;
             if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, W->comp[j]) != WK_OK)
                 return R->err.code;
             *again = true;
@@ -973,17 +985,34 @@ static wk_status collapse_flat_cycle(wk_wavefront *W, uint32_t f, double t, bool
 
 wk_status wf_collinear_rule(wk_wavefront *W, uint32_t v, double t) { return slide(W, v, t); }
 
-wk_status wf_resolve_group(wk_wavefront *W, double t) {
+/* Plan the group at node radius W->eps_g: rounds until no vertex is forced
+** to become a node.  Changes only the group's scratch state. */
+static wk_status plan_rounds(wk_wavefront *W, double t) {
     wk_run *R = W->R;
     W->n_forced = 0;
-    W->n_fresh = 0;
-    W->n_dead = 0;
     for (int round = 0;; round++) {
         bool again;
         if (plan(W, t, &again) != WK_OK) return R->err.code;
-        if (!again) break;
+        if (!again) return WK_OK;
         if (round > 64 + (int)W->n_comp)
             return WK_FAIL(R, WK_EALGO, W->P->name, 0, "wavefront: too many spikes at t = %.17g", t);
+    }
+}
+
+wk_status wf_resolve_group(wk_wavefront *W, double t) {
+    wk_run *R = W->R;
+    W->n_fresh = 0;
+    W->n_dead = 0;
+    /* A group that cannot be planned consistently at eps_d (nodes of a
+    ** skeleton feature below the tolerance, split between clusters) is
+    ** planned again with twice the node radius, up to WK_GROUP_WIDEN_MAX
+    ** eps_d: a coarser picture of the same instant, still far inside the
+    ** validator's tolerance.  Planning changes nothing but scratch state, so
+    ** a retry starts from the same wavefront. */
+    for (W->eps_g = W->eps_d;; W->eps_g *= 2) {
+        if (plan_rounds(W, t) == WK_OK) break;
+        if (R->err.code != WK_EALGO || W->eps_g >= WK_GROUP_WIDEN_MAX * W->eps_d) return R->err.code;
+        wk_run_clear_error(R);
     }
     if (commit(W, t) != WK_OK || count_group(W, t) != WK_OK) return R->err.code;
     /* collinear rule for fresh vertices between parallel edges */

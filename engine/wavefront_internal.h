@@ -74,6 +74,8 @@ struct wk_wavefront {
     uint32_t nv, cap_v;
     wk_event_queue Q;
     double eps_d, eps_t, t_now;
+    double eps_g;      /* node radius of the group being planned: eps_d, or
+                          wider on a retry (wf_resolve_group) */
     wk_point origin;   /* all positions are relative to it (bounding-box centre) */
     uint32_t stamp;
     /* group scratch, kept between groups */

@@ -238,11 +238,13 @@ run "$WSKEL" --check "$SQUARE"
 expect "--check on a good input exits 0" 0
 if [ -z "$ERR" ]; then pass "--check alone is silent on stderr"
 else fail "--check alone is silent on stderr" "stderr: $ERR"; fi
-# Every skeleton is validated before it is written: a known invalid output
-# (tests/data/known) gives exit 3 and no file, --no-check writes it.
-KNOWN=tests/data/known/turned_grid_t0_node.wpoly
+# Every skeleton is validated before it is written: a skeleton the
+# validator rejects (here: a tolerance of 1e-30 of the diagonal, far below
+# the rounding of any constructed node) gives exit 3 and no file, --no-check
+# writes it.
+KNOWN=tests/data/degenerate/turned_grid_t0_node.wpoly
 rm -f "$TMP/known.json"
-run "$WSKEL" -o "$TMP/known.json" "$KNOWN"
+run "$WSKEL" --check-tol 1e-30 -o "$TMP/known.json" "$KNOWN"
 expect "an invalid skeleton is not written (default validation)" 3
 if [ ! -e "$TMP/known.json" ]; then pass "no output file after a failed validation"
 else fail "no output file after a failed validation" "$TMP/known.json exists"; fi
