@@ -18,10 +18,9 @@
 **       both ends v and for both faces e, |d_e(v) - w(e) t_v| <= tol, where
 **       d_e is the signed distance from the supporting line of edge e,
 **       positive inside (the wavefront of e reaches v at time t_v).  An arc
-**       with both ends at |t| <= tol_t lies along the edge of one of its
-**       faces (both ends within tol of that edge's segment): it traces an
-**       edge swept at t = 0 by the collinear rule, or a sub-tolerance
-**       feature.
+**       between two input vertices joins adjacent ones and has the edge
+**       between them as a face: it traces that edge, swept at t = 0 by the
+**       collinear rule.
 **   (d) tree: every node is on an arc, no arc closes a cycle, all nodes are
 **       connected (hence arcs == nodes - 1).  At most one arc at an input
 **       vertex leaves the boundary (its other end has t > tol_t): one
@@ -32,9 +31,10 @@
 **       t ~ 0 too.  Why no bound on their number: going round an input
 **       vertex v inside P, the faces met are face(e_out) first and face(e_in)
 **       last; by (c) every face met in between belongs to an edge whose line
-**       passes through v, and every t ~ 0 arc at v lies along its own face's
-**       edge, so each such arc is the trace of one swept edge (or edge piece)
-**       ending at v: their number is the number of swept pieces there.
+**       passes through v, and an arc to another input vertex traces the one
+**       edge between them, so each t ~ 0 arc at v is the trace of one swept
+**       edge (or edge piece) ending at v: their number is the number of
+**       swept pieces there.
 **   (e) faces: for every edge e the arcs labelled e form the path of
 **       wk_face_cycle (no branch, no dead end, no loop, no stray arc); the
 **       face's signed area (xy projection) is >= -tol * scale; the face
@@ -419,7 +419,6 @@ static double line_dist(const wk_polygon *P, uint32_t e, double x, double y) {
 
 static wk_status check_arcs(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
                             double *max_err) {
-    double tol_t = time_tol(P, tol);
     if (wk_faces_check_ids(R, P, S, "validate (c): ") != WK_OK) return R->err.code;
     for (uint32_t i = 0; i < S->n_arcs; i++) {
         const wk_arc *c = &S->arcs[i];
@@ -437,26 +436,19 @@ static wk_status check_arcs(wk_run *R, const wk_polygon *P, const wk_skeleton *S
                                i, c->a, c->b, c->left, c->right, v, nd->t, d, e, want, err, tol);
             if (err > *max_err) *max_err = err;
         }
-        /* An arc at t ~ 0 (both ends) traces a piece of an input edge swept
-        ** at t = 0 (or a sub-tolerance feature): it must lie along the edge
-        ** of one of its faces, both ends within tol of that edge's segment.
-        ** Without this, an arc spanning two swept edges of a collinear run
-        ** (overlapping the arc along the second) would pass: (f) does not
-        ** look at sides that lie on their face's own edge. */
-        const wk_node *na = &S->nodes[c->a], *nb = &S->nodes[c->b];
-        if (fabs(na->t) <= tol_t && fabs(nb->t) <= tol_t) {
-            bool along = false;
-            for (int k = 0; k < 2 && !along; k++) {
-                uint32_t e = faces[k];
-                wk_point p = P->p[e], q = P->p[(e + 1) % P->n];
-                along = seg_dist(p, q, (wk_point){na->x, na->y}) <= tol &&
-                        seg_dist(p, q, (wk_point){nb->x, nb->y}) <= tol;
-            }
-            if (!along)
+        /* An arc between two input vertices traces an edge swept at t = 0:
+        ** the vertices are adjacent and the edge between them is one of its
+        ** faces.  Without this an arc spanning two swept edges of a
+        ** collinear run (overlapping the arc along the second) would pass:
+        ** (f) does not look at sides that lie on their face's own edge. */
+        uint32_t n = P->n;
+        if (c->a < n && c->b < n) {
+            uint32_t e = next_of(c->a, n) == c->b ? c->a : next_of(c->b, n) == c->a ? c->b : WK_NONE;
+            if (e == WK_NONE || (c->left != e && c->right != e))
                 return WK_FAIL(R, WK_EINVALID, P->name, 0,
-                               "validate (c): arc %u [%u, %u, %u, %u] runs at t = 0 but not along "
-                               "edge %u or edge %u (an arc at t = 0 traces a swept edge)",
-                               i, c->a, c->b, c->left, c->right, c->left, c->right);
+                               "validate (c): arc %u [%u, %u, %u, %u] joins two input vertices but "
+                               "does not trace the edge between them (one swept edge per arc)",
+                               i, c->a, c->b, c->left, c->right);
         }
     }
     return WK_OK;
