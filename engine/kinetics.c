@@ -14,30 +14,26 @@
 /* The parallel bars WK_PARALLEL_SIN and WK_ANTIPARALLEL_SIN, and why they
 ** differ, are in tolerance.h. */
 
-void wk_offset_line_of_points(wk_point a, wk_point b, double w, wk_offset_line *L) {
-    double dx = b.x - a.x, dy = b.y - a.y;
+/* The line of direction (dx, dy) through the midpoint (mx, my): c from the
+** midpoint, so both endpoints lie within rounding of the line. */
+static void line_from(double dx, double dy, double mx, double my, double w, wk_offset_line *L) {
     double len = hypot(dx, dy);
     L->ux = dx / len;
     L->uy = dy / len;
     L->nx = -L->uy;
     L->ny = L->ux;
-    /* c from the midpoint: both endpoints then lie within rounding of the line */
-    double mx = 0.5 * (a.x + b.x), my = 0.5 * (a.y + b.y);
     L->c = L->nx * mx + L->ny * my;
     L->w = w;
 }
 
+void wk_offset_line_of_points(wk_point a, wk_point b, double w, wk_offset_line *L) {
+    line_from(b.x - a.x, b.y - a.y, 0.5 * (a.x + b.x), 0.5 * (a.y + b.y), w, L);
+}
+
 void wk_offset_line_of_edge_at(const wk_polygon *P, uint32_t e, wk_point o, wk_offset_line *L) {
     wk_point a = P->p[e], b = P->p[(e + 1) % P->n];
-    double dx = b.x - a.x, dy = b.y - a.y;
-    double len = hypot(dx, dy);
-    L->ux = dx / len;
-    L->uy = dy / len;
-    L->nx = -L->uy;
-    L->ny = L->ux;
-    double mx = 0.5 * ((a.x - o.x) + (b.x - o.x)), my = 0.5 * ((a.y - o.y) + (b.y - o.y));
-    L->c = L->nx * mx + L->ny * my;
-    L->w = P->w[e];
+    line_from(b.x - a.x, b.y - a.y, 0.5 * ((a.x - o.x) + (b.x - o.x)), 0.5 * ((a.y - o.y) + (b.y - o.y)),
+              P->w[e], L);
 }
 
 void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L) {
