@@ -235,16 +235,14 @@ int main(int argc, char **argv) {
                 goto done;
             }
     }
-    if (wk_solve(&R, V, P, &S, &time_s, &peak) != WK_OK) {
+    wk_validate_report rep;
+    if (check ? wk_solve_checked(&R, V, P, check_tol * wk_polygon_scale(P), &S, &time_s, &peak,
+                                 &rep) != WK_OK
+              : wk_solve(&R, V, P, &S, &time_s, &peak) != WK_OK) {
         rc = report(&R, verbose);
         goto done;
     }
     if (check) {
-        wk_validate_report rep;
-        if (wk_validate(&R, P, S, check_tol * wk_polygon_scale(P), &rep) != WK_OK) {
-            rc = report(&R, verbose);
-            goto done;
-        }
         if (stats)
             fprintf(stderr, "check: ok (%u nodes, %u arcs, max distance error %.3g, area error %.3g)\n",
                     rep.nodes, rep.arcs, rep.max_distance_error, rep.area_error);

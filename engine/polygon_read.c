@@ -8,6 +8,13 @@
 **                        to the next) defaults to 1
 ** Blank lines are ignored anywhere.  Numbers are C strtod syntax, and must be
 ** finite.  Every message carries the line it is about.
+** Bytes: lines end in LF or CRLF; the blanks are space and tab.  No NUL byte
+** and no other control character (0x01-0x1F but tab, LF and a CR before LF;
+** 0x7F) may appear anywhere, comments included.  Outside comments the text is
+** ASCII (a number is ASCII, so any other byte is a stray one); comments may
+** hold any other byte, UTF-8 or not.  A UTF-8 byte order mark may open the
+** file.  The byte checks run line by line as the file is parsed, so the
+** first fault in the file is the one reported, with its line and column.
 **
 ** GraphML (Salzburg database, surfer2, monos): <key> elements map attribute
 ** names to key ids; nodes carry <data key=ID> for "vertex-coordinate-x" and
@@ -19,6 +26,15 @@
 ** Both readers only collect arrays and leave every geometric check to
 ** wk_polygon_from_arrays, passing the input line of each vertex (for GraphML
 ** the line of its <node> element) so its messages point into the file.
+**
+** GraphML bytes: the document must be UTF-8 (strictly: no overlong forms, no
+** surrogates, nothing above U+10FFFF), comments included, with no NUL byte
+** and no control character but tab, CR and LF (nor DEL or the C1 controls
+** U+0080-U+009F); these are checked before libxml2 sees the text, with line
+** and column, and a declared encoding other than UTF-8 (or US-ASCII) is
+** refused.  Ambiguous documents are refused rather than read one way: two
+** <key>s for one attribute, a second <graph>, a node or edge with two <data>
+** for one key.
 **
 ** Memory: the file text and all arrays come from the run's allocator.
 ** libxml2 allocates its document tree with its own allocator (changing that
@@ -86,8 +102,131 @@ static wk_status slurp(wk_run *R, FILE *f, const char *name, text *t) {
 
 /* ---- numbers ---- */
 
-static bool is_blank(char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+/* The blanks of a .wpoly line (CR only ends a line, before LF; \v and \f
+** are refused as control characters). */
+static bool is_blank(char c) { return c == ' ' || c == '\t'; }
+
+/* ---- bytes ---- */
+
+/* Length of the strict UTF-8 sequence at s[0..len) (1 to 4), with its code
+** point in *cp; 0 if the bytes there are not one (a stray continuation byte,
+** a truncated sequence, an overlong form, a surrogate, above U+10FFFF, or
+** 0xC0, 0xC1, 0xF5-0xFF). */
+static size_t utf8_seq(const unsigned char *s, size_t len, uint32_t *cp) {
+    unsigned char c = s[0];
+    size_t k;
+    uint32_t v, min;
+    if (c < 0x80) {
+        *cp = c;
+        return 1;
+    } else if (c >= 0xC2 && c <= 0xDF) {
+        k = 2, v = c & 0x1Fu, min = 0x80;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+        k = 3, v = c & 0x0Fu, min = 0x800;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        k = 4, v = c & 0x07u, min = 0x10000;
+    } else {
+        return 0;
+    }
+    if (len < k) return 0;
+    for (size_t i = 1; i < k; i++) {
+        if ((s[i] & 0xC0) != 0x80) return 0;
+        v = (v << 6) | (s[i] & 0x3Fu);
+    }
+    if (v < min || v > 0x10FFFF || (v >= 0xD800 && v <= 0xDFFF)) return 0;
+    *cp = v;
+    return k;
+}
+
+/* A control character: C0 (0x00-0x1F), DEL and the C1 controls. */
+static bool is_control(uint32_t cp) { return cp < 0x20 || (cp >= 0x7F && cp <= 0x9F); }
+
+/* Describes a refused byte or character into why: NUL, a control
+** character, a lone CR. */
+static void describe_control(uint32_t cp, char *why, size_t size) {
+    if (cp == 0)
+        snprintf(why, size, "NUL byte");
+    else if (cp == '\r')
+        snprintf(why, size, "carriage return (0x0D) not followed by a line feed (lines end in "
+                            "LF or CRLF)");
+    else if (cp < 0x80)
+        snprintf(why, size, "control character 0x%02X", (unsigned)cp);
+    else
+        snprintf(why, size, "control character U+%04X", (unsigned)cp);
+}
+
+/* Text m as one line of UTF-8 text in buf (for messages: libxml2's hold
+** newlines, and quote the input, as do ours): runs of blanks and control
+** characters become one space, bytes that are no UTF-8 (a quote cut inside
+** a character) '?', and no blank is left at either end. */
+static void clean_message(char *buf, size_t size, const char *m) {
+    const unsigned char *u = (const unsigned char *)m;
+    size_t len = strlen(m), n = 0;
+    bool space = false;
+    for (size_t i = 0; i < len && n + 5 < size;) {
+        uint32_t cp;
+        size_t k = utf8_seq(u + i, len - i, &cp);
+        if (k != 0 && (cp == ' ' || is_control(cp))) {
+            space = n > 0;
+            i += k;
+            continue;
+        }
+        if (space) buf[n++] = ' ';
+        space = false;
+        if (k == 0) {
+            buf[n++] = '?';
+            i++;
+        } else {
+            memcpy(buf + n, u + i, k);
+            n += k;
+            i += k;
+        }
+    }
+    buf[n] = '\0';
+}
+
+/* A UTF-16 byte order mark (either order): the file is UTF-16, which
+** neither reader takes; said as such rather than as a stray byte 0xFF. */
+static bool is_utf16_bom(const char *s, size_t len) {
+    const unsigned char *u = (const unsigned char *)s;
+    return len >= 2 && ((u[0] == 0xFF && u[1] == 0xFE) || (u[0] == 0xFE && u[1] == 0xFF));
+}
+static wk_status utf16_refused(wk_run *R, const char *name) {
+    return WK_FAIL(R, WK_EINPUT, name, 1,
+                   "column 1: UTF-16 byte order mark; the input must be UTF-8 (or ASCII)");
+}
+
+/* Checks the bytes of one .wpoly line s[0..len) (its LF, and the CR of a
+** CRLF, excluded).  Outside comments only printable ASCII and tab; in a
+** comment also any byte >= 0x80.  On a fault: false, *col the 1-based column
+** of the offending byte and why the reason. */
+static bool wpoly_line_bytes(const char *s, size_t len, bool comment, size_t *col, char *why,
+                             size_t size) {
+    const unsigned char *u = (const unsigned char *)s;
+    for (size_t i = 0; i < len; i++) {
+        unsigned char c = u[i];
+        if (c >= 0x20 && c < 0x7F) continue;
+        if (c == '\t') continue;
+        *col = i + 1;
+        if (c < 0x80) {
+            describe_control(c, why, size);
+            return false;
+        }
+        if (comment) continue;
+        uint32_t cp;
+        size_t k = utf8_seq(u + i, len - i, &cp);
+        if (k == 0)
+            snprintf(why, size, "byte 0x%02X is not UTF-8 (outside comments the text is ASCII)", c);
+        else if (is_control(cp))
+            describe_control(cp, why, size);
+        else
+            snprintf(why, size,
+                     "non-ASCII character U+%04X (outside comments the text is ASCII: numbers, "
+                     "blanks)",
+                     (unsigned)cp);
+        return false;
+    }
+    return true;
 }
 
 /* The whole of s[0..len) must be one finite number. */
@@ -167,6 +306,7 @@ static wk_status parse_wpoly(wk_run *R, text *t, const char *name, wk_polygon **
     uint32_t n = 0, got = 0;
     long count_line = 0, ln = 0;
     char *s = t->buf, *end = t->buf + t->len;
+    if (is_utf16_bom(s, t->len)) return utf16_refused(R, name);
     if (t->len >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0) s += 3; /* UTF-8 byte order mark */
     char *tok[MAX_TOKENS];
     size_t tl[MAX_TOKENS];
@@ -179,12 +319,24 @@ static wk_status parse_wpoly(wk_run *R, text *t, const char *name, wk_polygon **
     while (s < end || (s == end && ln == 0)) {
         char *nl = memchr(s, '\n', (size_t)(end - s));
         char *eol = nl ? nl : end;
-        *eol = '\0';
-        ln++;
         char *line = s;
         s = eol + 1;
-        while (is_blank(*line)) line++;
-        if (*line == '#' || *line == '\0') {
+        ln++;
+        if (eol > line && eol[-1] == '\r') eol--; /* CRLF */
+        *eol = '\0';
+        /* The line is line[0..eol); it may hold NUL bytes, which the check
+        ** below refuses before any string function looks at it. */
+        char *first = line;
+        while (first < eol && is_blank(*first)) first++;
+        bool comment = first < eol && *first == '#';
+        size_t col;
+        char why[160];
+        if (!wpoly_line_bytes(line, (size_t)(eol - line), comment, &col, why, sizeof why)) {
+            st = WK_FAIL(R, WK_EINPUT, name, ln, "column %zu: %s", col, why);
+            goto done;
+        }
+        line = first;
+        if (comment || line == eol) {
             if (!nl) break;
             continue;
         }
@@ -335,24 +487,47 @@ static void gkey_clear(gkey *k) {
     xstr_free(&k->dflt);
 }
 
-/* Finds <key attr.name=NAME for=FOR|all> among the children of root. */
-static void find_key(xmlNode *root, const char *attr_name, const char *for_what, gkey *k) {
+/* Finds <key attr.name=NAME for=FOR|all id=...> among the children of root.
+** Returns NULL, or the second such key (the file is ambiguous; *first is
+** then the first one). */
+static xmlNode *find_key(xmlNode *root, const char *attr_name, const char *for_what, gkey *k,
+                         xmlNode **first) {
     k->id = k->dflt = (xstr){NULL, NULL};
+    *first = NULL;
     for (xmlNode *c = root->children; c; c = c->next) {
         if (!is_element(c, "key") || !attr_is(c, "attr.name", BAD_CAST attr_name)) continue;
         xstr f = attr_value(c, "for");
         bool ok = !f.s || xmlStrEqual(f.s, BAD_CAST for_what) || xmlStrEqual(f.s, BAD_CAST "all");
         xstr_free(&f);
         if (!ok) continue;
-        k->id = attr_value(c, "id");
-        if (!k->id.s) continue;
+        xstr id = attr_value(c, "id");
+        if (!id.s) continue;
+        if (*first) {
+            xstr_free(&id);
+            return c;
+        }
+        *first = c;
+        k->id = id;
         for (xmlNode *d = c->children; d; d = d->next)
             if (is_element(d, "default")) {
                 k->dflt = text_value(d);
                 break;
             }
-        return;
     }
+    return NULL;
+}
+
+/* At most max bytes of s into buf (size > max), cut before a partial UTF-8
+** sequence so that a message stays UTF-8. */
+static void clip_utf8(char *buf, size_t size, const char *s, size_t max) {
+    size_t n = strlen(s);
+    if (n > max) {
+        n = max;
+        while (n > 0 && ((unsigned char)s[n] & 0xC0) == 0x80) n--;
+    }
+    if (n >= size) n = size - 1;
+    memcpy(buf, s, n);
+    buf[n] = '\0';
 }
 
 static bool parse_text_number(const xmlChar *s, double *out) {
@@ -371,15 +546,22 @@ static bool parse_text_number(const xmlChar *s, double *out) {
 
 /* K's value at element e, from its <data key=K> child or else K's default:
 ** 1 when *v was set, 0 when there is neither, -1 when the text is not a
-** finite number (then bad holds it).  *where: the element the value came
-** from (for the line number). */
+** finite number (then bad holds it), -2 when e has two <data key=K> (then
+** *where is the second, and bad holds the line of the first).  *where: the
+** element the value came from (for the line number). */
 static int key_number(xmlNode *e, const gkey *K, double *v, xmlNode **where, char *bad,
                       size_t bad_size) {
     *where = e;
     if (!K->id.s) return 0;
     xstr t = {NULL, NULL};
-    for (xmlNode *d = e->children; d && !t.s; d = d->next)
+    for (xmlNode *d = e->children; d; d = d->next)
         if (is_element(d, "data") && attr_is(d, "key", K->id.s)) {
+            if (t.s) {
+                snprintf(bad, bad_size, "%ld", xmlGetLineNo(*where));
+                *where = d;
+                xstr_free(&t);
+                return -2;
+            }
             *where = d;
             t = text_value(d);
         }
@@ -388,7 +570,11 @@ static int key_number(xmlNode *e, const gkey *K, double *v, xmlNode **where, cha
         t.s = K->dflt.s; /* borrowed from K */
     }
     bool ok = parse_text_number(t.s, v);
-    if (!ok) snprintf(bad, bad_size, "%.40s", (const char *)t.s);
+    if (!ok) {
+        char one_line[64];
+        clean_message(one_line, sizeof one_line, (const char *)t.s);
+        clip_utf8(bad, bad_size, one_line, 40);
+    }
     xstr_free(&t);
     return ok ? 1 : -1;
 }
@@ -485,6 +671,9 @@ static wk_status node_coordinate(wk_run *R, const char *name, graph *G, uint32_t
     if (got == 1) return WK_OK;
     describe_element(G->node[i], "node", i, d, sizeof d);
     if (got == 0) return WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where), "%s has no %s", d, attr_name);
+    if (got == -2)
+        return WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
+                       "%s has a second %s (the first on line %s)", d, attr_name, bad);
     return WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where), "%s: %s '%s' is not a finite number",
                    d, attr_name, bad);
 }
@@ -504,13 +693,38 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
                      root ? (const char *)root->name : "(none)");
         goto done;
     }
-    find_key(root, "vertex-coordinate-x", "node", &kx);
-    find_key(root, "vertex-coordinate-y", "node", &ky);
-    find_key(root, "edge-weight", "edge", &kw);
-    find_key(root, "edge-weight-additive", "edge", &ka);
+    {
+        static const char *const key_name[4] = {"vertex-coordinate-x", "vertex-coordinate-y",
+                                                "edge-weight", "edge-weight-additive"};
+        gkey *key[4] = {&kx, &ky, &kw, &ka};
+        for (int i = 0; i < 4; i++) {
+            xmlNode *first, *second = find_key(root, key_name[i], i < 2 ? "node" : "edge",
+                                                key[i], &first);
+            if (second) {
+                st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(second),
+                             "a second <key> for attr.name=\"%s\" (the first on line %ld)",
+                             key_name[i], xmlGetLineNo(first));
+                goto done;
+            }
+        }
+    }
     xmlNode *graph_el = NULL;
-    for (xmlNode *c = root->children; c && !graph_el; c = c->next)
-        if (is_element(c, "graph")) graph_el = c;
+    for (xmlNode *c = root->children; c; c = c->next)
+        if (is_element(c, "node") || is_element(c, "edge")) {
+            st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(c),
+                         "<%s> element outside <graph> (a child of <graphml>)",
+                         (const char *)c->name);
+            goto done;
+        } else if (is_element(c, "graph")) {
+            if (graph_el) {
+                st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(c),
+                             "a second <graph> element (one polygon per file; the first on "
+                             "line %ld)",
+                             xmlGetLineNo(graph_el));
+                goto done;
+            }
+            graph_el = c;
+        }
     if (!graph_el) {
         st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(root), "no <graph> element in <graphml>");
         goto done;
@@ -629,7 +843,10 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
         if (got == 0) G.ew[i] = 1.0;
         if (got < 0 || (got > 0 && !(G.ew[i] > 0))) {
             describe_element(e, "edge", i, d1, sizeof d1);
-            if (got < 0)
+            if (got == -2)
+                st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
+                             "%s has a second edge-weight (the first on line %s)", d1, bad);
+            else if (got < 0)
                 st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
                              "%s: edge-weight '%s' is not a finite number", d1, bad);
             else
@@ -639,7 +856,7 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
         }
         double add = 0;
         got = key_number(e, &ka, &add, &where, bad, sizeof bad);
-        if (got < 0 || add != 0) {
+        if (got < 0 || add != 0) { /* a second one included: also not supported */
             st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
                          "%s: non-zero edge-weight-additive is not supported",
                          describe_element(e, "edge", i, d1, sizeof d1));
@@ -702,12 +919,64 @@ done:
     return st;
 }
 
+/* The bytes of a GraphML document: strict UTF-8 throughout, no NUL, no
+** control character but tab, LF and CR (see the header).  WK_OK or
+** WK_EINPUT naming the line and column (in bytes) of the first fault. */
+static wk_status graphml_bytes(wk_run *R, const char *buf, size_t len, const char *name) {
+    const unsigned char *u = (const unsigned char *)buf;
+    if (is_utf16_bom(buf, len)) return utf16_refused(R, name);
+    long line = 1;
+    size_t line_start = 0;
+    for (size_t i = 0; i < len;) {
+        unsigned char c = u[i];
+        if (c >= 0x20 && c < 0x7F) {
+            i++;
+            continue;
+        }
+        if (c == '\n') {
+            line++;
+            line_start = ++i;
+            continue;
+        }
+        if (c == '\t' || c == '\r') {
+            i++;
+            continue;
+        }
+        uint32_t cp;
+        size_t k = utf8_seq(u + i, len - i, &cp);
+        char why[160];
+        if (k == 0)
+            snprintf(why, sizeof why, "byte 0x%02X is not UTF-8 (GraphML input must be UTF-8)", c);
+        else if (is_control(cp))
+            describe_control(cp, why, sizeof why);
+        else {
+            i += k;
+            continue;
+        }
+        return WK_FAIL(R, WK_EINPUT, name, line, "column %zu: %s", i - line_start + 1, why);
+    }
+    return WK_OK;
+}
+
+/* Case-insensitive ASCII comparison. */
+static bool ascii_caseeq(const char *a, const char *b) {
+    for (; *a && *b; a++, b++) {
+        char x = *a >= 'A' && *a <= 'Z' ? (char)(*a - 'A' + 'a') : *a;
+        char y = *b >= 'A' && *b <= 'Z' ? (char)(*b - 'A' + 'a') : *b;
+        if (x != y) return false;
+    }
+    return *a == *b;
+}
+
 wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const char *name,
                                   wk_polygon **out) {
     *out = NULL;
     if (!name) name = "";
     if (len > INT_MAX)
         return WK_FAIL(R, WK_EINPUT, name, 0, "GraphML input too large (%zu bytes)", len);
+    wk_status bytes = graphml_bytes(R, buf, len, name);
+    if (bytes != WK_OK) return bytes;
+    bool first_failure = R->err.code == WK_OK;
     xmlParserCtxtPtr ctx = xmlNewParserCtxt();
     if (!ctx) return WK_FAIL(R, WK_ENOMEM, name, 0, "out of memory (libxml2 parser context)");
     /* NONET: never fetch anything; no NOENT/DTDLOAD, so no external entities.
@@ -724,17 +993,30 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
         char msg[256] = "not well-formed";
         long line = 0;
         if (err && err->message) {
-            snprintf(msg, sizeof msg, "%s", err->message);
-            size_t l = strlen(msg);
-            while (l > 0 && (msg[l - 1] == '\n' || msg[l - 1] == ' ')) msg[--l] = '\0';
+            clean_message(msg, sizeof msg, err->message);
             line = err->line;
         }
         st = WK_FAIL(R, WK_EINPUT, name, line, "XML error: %s", msg);
+    } else if (doc->encoding && !ascii_caseeq((const char *)doc->encoding, "UTF-8") &&
+               !ascii_caseeq((const char *)doc->encoding, "UTF8") &&
+               !ascii_caseeq((const char *)doc->encoding, "US-ASCII") &&
+               !ascii_caseeq((const char *)doc->encoding, "ASCII")) {
+        /* The bytes are UTF-8 (checked above) but libxml2 decoded them as
+        ** declared: refuse rather than read something else than the file. */
+        st = WK_FAIL(R, WK_EINPUT, name, 1,
+                     "the document declares encoding '%.40s'; GraphML input must be UTF-8",
+                     (const char *)doc->encoding);
     } else {
         st = graphml_polygon(R, doc, name, out);
     }
     xmlFreeDoc(doc);
     xmlFreeParserCtxt(ctx);
+    if (st != WK_OK && first_failure && R->err.code != WK_OK) {
+        /* Messages quote the document (ids, values): one line of UTF-8. */
+        char tmp[sizeof R->err.msg];
+        clean_message(tmp, sizeof tmp, R->err.msg);
+        memcpy(R->err.msg, tmp, sizeof tmp);
+    }
     return st;
 }
 
@@ -755,7 +1037,7 @@ wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out) {
     const char *c = t.buf;
     if ((unsigned char)c[0] == 0xEF && (unsigned char)c[1] == 0xBB && (unsigned char)c[2] == 0xBF)
         c += 3;
-    while (is_blank(*c) || *c == '\n') c++;
+    while (is_blank(*c) || *c == '\r' || *c == '\n') c++;
     if (*c == '<')
         st = wk_polygon_read_graphml(R, t.buf, t.len, name, out);
     else

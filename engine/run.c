@@ -29,6 +29,7 @@ void (wk_run_init)(wk_run *R) {
     R->opt.k = 1;
     R->opt.collinear = WK_COLLINEAR_LOWER;
     R->opt.threads = 1;
+    R->opt.tol_scale = 1;
     R->err.code = WK_OK;
 }
 
@@ -132,4 +133,37 @@ wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skele
     }
     if (R->obs->finished) R->obs->finished(R->obs_ud, st == WK_OK);
     return st;
+}
+
+wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, double tol,
+                           wk_skeleton **out, double *time_s, size_t *peak_bytes,
+                           wk_validate_report *rep) {
+    *out = NULL;
+    double total_s = 0, scale0 = R->opt.tol_scale;
+    size_t peak = 0;
+    wk_error first;
+    wk_status st = WK_OK;
+    for (double scale = scale0;; scale *= WK_TOL_ESCALATE_STEP) {
+        double t_s = 0;
+        size_t pk = 0;
+        R->opt.tol_scale = scale;
+        st = wk_solve(R, V, P, out, &t_s, &pk);
+        total_s += t_s;
+        if (pk > peak) peak = pk;
+        if (st == WK_OK && (st = wk_validate(R, P, *out, tol, rep)) != WK_OK) {
+            wk_skeleton_free(R, *out);
+            *out = NULL;
+        }
+        if (scale == scale0) first = R->err;
+        if (st == WK_OK || (st != WK_EALGO && st != WK_EINVALID) ||
+            scale * WK_TOL_ESCALATE_STEP > WK_TOL_ESCALATE_MAX * scale0)
+            break;
+        wk_run_clear_error(R);
+        wk_count(R, WK_COUNTER_tolerance_escalations, 1);
+    }
+    R->opt.tol_scale = scale0;
+    if (st != WK_OK) R->err = first; /* the first attempt says what went wrong */
+    if (time_s) *time_s = total_s;
+    if (peak_bytes) *peak_bytes = peak;
+    return st == WK_OK ? WK_OK : R->err.code;
 }

@@ -101,6 +101,16 @@
 ** time: generous on purpose, it looks for broken invariants, not rounding. */
 #define WK_INVARIANT_SLACK 1e3
 
+/* wk_solve_checked: a run that fails, or whose skeleton the validator
+** rejects, is repeated with the simulation's tolerances (eps_d, eps_t)
+** WK_TOL_ESCALATE_STEP times coarser, up to WK_TOL_ESCALATE_MAX times: at
+** 64 * eps_d = 6.4e-8 * scale the coarsest picture is still 16 times finer
+** than the validator's default.  Fuzzed polygons with features a few eps_d
+** wide (a vertex 5e8 away from a part of size 1) gave skeletons with a
+** double arc at 1 * eps_d and valid ones from 4 * eps_d on. */
+#define WK_TOL_ESCALATE_STEP 4.0
+#define WK_TOL_ESCALATE_MAX 64.0
+
 /* ------------------------------------------------------- the validator */
 
 /* Default distance tolerance: WK_VALIDATE_TOL_REL * scale (a caller may
@@ -126,8 +136,8 @@
 
 /* ------------------------------------------------- search structures */
 
-/* Two unit directions are parallel below this |cross| in the arrangement's
-** crossing queries (the sine of WK_ANTIPARALLEL_SIN: collinear overlaps are
+/* Two unit directions are parallel below this |cross| in crossing queries
+** between bisector segments (the sine of WK_ANTIPARALLEL_SIN: collinear overlaps are
 ** not crossings). */
 #define WK_ARR_PARALLEL 1e-12
 
@@ -155,5 +165,21 @@
 /* Below this |denominator| a line-line intersection is not formed (the
 ** lines are parallel to the last bits; the quotient would overflow). */
 #define WK_DIV_GUARD 1e-300
+
+/* ---------------------------------------------------- sweep directions */
+
+/* P counts as sweepable in direction d (every line perpendicular to d meets
+** it in one interval: 001's class) when moving each vertex by at most
+** WK_MONO_DIR_TOL * eps_d along d makes it so: below eps_d the simulation
+** cannot tell such a polygon from a sweepable one.  Polygons sweepable only
+** with edges perpendicular to the sweep, turned in doubles, need it: their
+** "perpendicular" edges differ in direction by rounding (~1e-16 *
+** |coordinates| / edge length), so the exact good directions of their
+** reflex vertices do not meet (22 of 88 such polygons were refused as
+** sweepable in no direction).  1: the rounding of
+** turned coordinates (~1e-16 * (scale + offset)) stays far below
+** eps_d = 1e-9 * scale unless the polygon lies ~1e6 of its own sizes from
+** the origin. */
+#define WK_MONO_DIR_TOL 1.0
 
 #endif

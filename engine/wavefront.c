@@ -432,7 +432,7 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
     wk_event_queue_init(&W.Q);
     double wmax = 0;
     for (uint32_t i = 0; i < P->n; i++) wmax = P->w[i] > wmax ? P->w[i] : wmax;
-    W.eps_d = WK_TOL_REL * wk_polygon_scale(P);
+    W.eps_d = R->opt.tol_scale * WK_TOL_REL * wk_polygon_scale(P);
     /* tolerance.h: eps_d and eps_t */
     W.eps_t = WK_TOL_TIME * W.eps_d / wmax;
     W.eps_g = W.eps_d;

@@ -137,7 +137,8 @@ typedef struct wk_counter_def {
     X(queue_pops, "event queue extractions of the minimum")                                  \
     X(queue_updates, "event queue key changes")                                              \
     X(queue_removes, "event queue removals of a non-minimum")                                \
-    X(exact_fallbacks, "orientation tests the float filter could not decide (exact stage)")
+    X(exact_fallbacks, "orientation tests the float filter could not decide (exact stage)")   \
+    X(tolerance_escalations, "inputs solved again with coarser tolerances (wk_solve_checked)")
 
 typedef enum wk_engine_counter {
 #define WK_COUNTER_ENUM(name, meaning) WK_COUNTER_##name,
@@ -213,6 +214,8 @@ typedef struct wk_options {
     bool check_invariants;   /* after every group of events, check the
                                 wavefront's and the finder's invariants
                                 (O(n) each: for tests, --check-invariants) */
+    double tol_scale;        /* the simulation's tolerances times this (1;
+                                wk_solve_checked raises it on a retry) */
 } wk_options;
 
 /* ------------------------------------------------------------------ run */
@@ -531,5 +534,18 @@ const wk_variant *wk_variant_reference(void);
 ** peak_bytes (may be NULL) receive the construction's figures. */
 wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skeleton **out,
                    double *time_s, size_t *peak_bytes);
+/* wk_solve, then wk_validate (tol as there; rep may be NULL).  When the
+** variant fails (WK_EALGO) or its skeleton fails validation, the input is
+** solved again with the simulation's tolerances WK_TOL_ESCALATE_STEP times
+** coarser, up to WK_TOL_ESCALATE_MAX (tolerance.h): a skeleton feature at
+** the scale of the tolerance that the fine tolerance split inconsistently
+** is resolved at a coarser one, still far inside the validator's.  Returns
+** the first valid skeleton, or the first attempt's failure.  time_s and
+** peak_bytes cover all attempts (time summed, peak the largest); the
+** counters add up over the attempts and tolerance_escalations counts the
+** retries. */
+wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, double tol,
+                           wk_skeleton **out, double *time_s, size_t *peak_bytes,
+                           wk_validate_report *rep);
 
 #endif

@@ -883,7 +883,8 @@ Test(polygon, graphml_bytes) {
     expect_mem_square(buf, n, true, NULL);
     n = graphml_with(buf, sizeof buf, "<?xml version='1.0' encoding='US-ASCII'?>\n", MEM("1"));
     expect_mem_square(buf, n, true, NULL);
-    n = graphml_with(buf, sizeof buf, "\xEF\xBB\xBF<!-- caf\xc3\xa9 \xf0\x9f\x97\xba -->\n", MEM("1"));
+    n = graphml_with(buf, sizeof buf, "\xEF\xBB\xBF<!-- caf\xc3\xa9 \xf0\x9f\x97\xba -->\n",
+                     MEM("1"));
     expect_mem_square(buf, n, true, NULL);
     /* Line 7 of the document, column 28 is the x of node c. */
     for (int b = 0; b < 0x100; b++) {
@@ -972,9 +973,11 @@ Test(polygon, graphml_without_edges_in_the_graph) {
     expect_mem_reject(buf, (size_t)n, true, "mem:3: <node> element outside <graph>");
     n = snprintf(buf, sizeof buf, "%s<graph>\n%s</graph><graph>%s</graph></graphml>\n", keys,
                  nodes, edges);
-    expect_mem_reject(buf, (size_t)n, true, "mem:7: a second <graph> element (one polygon per file; the first on line 3)");
-    n = snprintf(buf, sizeof buf, "%s<graph>\n%s%s<edge source='p' target='x'/></graph></graphml>\n",
-                 keys, nodes, edges);
+    expect_mem_reject(buf, (size_t)n, true,
+                      "mem:7: a second <graph> element (one polygon per file; the first on line 3)");
+    n = snprintf(buf, sizeof buf,
+                 "%s<graph>\n%s%s<edge source='p' target='x'/></graph></graphml>\n", keys, nodes,
+                 edges);
     expect_mem_reject(buf, (size_t)n, true, "target 'x' is not a node id");
 }
 
@@ -1101,4 +1104,30 @@ Test(polygon, fault_injection_readers_bad_corpus) {
         "</graph></graphml>\n";
     reader_case h = {NULL, no_edges, strlen(no_edges), true};
     fault_loop_case("graphml no edges", &h, WK_EINPUT);
+}
+
+/* The format is chosen by the first character that is not a blank, CR or
+** LF (after a byte order mark): CRLF line ends before the root element
+** still mean GraphML. */
+Test(polygon, read_file_detects_graphml_after_blank_lines) {
+    char doc[2048];
+    size_t n = graphml_with(doc, sizeof doc, "\xEF\xBB\xBF\r\n \t\r\n",
+                            MEM("1"));
+    char path[] = "/tmp/wskel-test-XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert_geq(fd, 0);
+    FILE *f = fdopen(fd, "wb");
+    cr_assert_eq(fwrite(doc, 1, n, f), n);
+    fclose(f);
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = NULL;
+    wk_status st = wk_polygon_read_file(&R, path, &P);
+    char msg[1024];
+    err_text(&R, msg, sizeof msg);
+    remove(path);
+    cr_assert_eq(st, WK_OK, "%s", msg);
+    cr_assert_eq(P->n, 4);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
 }

@@ -1,0 +1,151 @@
+/*
+** fuzz_variants.c: libFuzzer target for reader + every variant + validator.
+**
+** The input is read by content (wk_polygon_read_file on a memfd, so the
+** format detection is fuzzed too) and checked like the reader targets do.
+** An accepted polygon of at most MAX_N vertices goes through every
+** registered variant (wk_variant_at(i), default options, a fresh strict run
+** each), and every skeleton through wk_validate.  Findings:
+**   - a crash, UB, a leak (sanitizers; tracked bytes: each run is strict,
+**     so wk_run_close aborts when bytes are left), a hang (-timeout);
+**   - a status a variant may not return on a valid polygon: anything but
+**     WK_OK, WK_EALGO, WK_EINVALID, or WK_EUNSUPPORTED from a non-reference
+**     variant;
+**   - "invalid": the validator rejected a skeleton (WK_EINVALID, exit 3;
+**     also when the variant's own check returned it);
+**   - "mismatch": a valid skeleton whose node or arc count differs from the
+**     reference's (naive's) valid skeleton;
+**   - "ealgo": a variant gave up (WK_EALGO, exit 2).  Not a crash, but a
+**     defect for a valid input: saved to $WSKEL_FUZZ_EALGO_DIR (when set)
+**     and not aborted on, unless WSKEL_FUZZ_EALGO_ABORT=1.
+** invalid and mismatch abort, unless WSKEL_FUZZ_COLLECT=DIR is set: then
+** they are saved there (invalid-VARIANT-HASH.wpoly, ...) and the run goes
+** on, for a fuzz run whose job is memory errors and hangs while the
+** geometry findings are known.
+*/
+#define _GNU_SOURCE
+#include "fuzz_common.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#define MAX_N 64
+
+static uint64_t fnv1a(const uint8_t *d, size_t n) {
+    uint64_t h = 1469598103934665603u;
+    for (size_t i = 0; i < n; i++) h = (h ^ d[i]) * 1099511628211u;
+    return h;
+}
+
+static int is_graphml(const uint8_t *d, size_t n) {
+    size_t i = n >= 3 && d[0] == 0xEF && d[1] == 0xBB && d[2] == 0xBF ? 3 : 0;
+    while (i < n && (d[i] == ' ' || d[i] == '\t' || d[i] == '\r' || d[i] == '\n')) i++;
+    return i < n && d[i] == '<';
+}
+
+/* Saves the input as DIR/KIND-VARIANT-HASH.EXT; 1 if it was new. */
+static int save(const char *dir, const char *kind, const char *variant, const uint8_t *d,
+                size_t n) {
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s-%s-%016llx.%s", dir, kind, variant,
+             (unsigned long long)fnv1a(d, n), is_graphml(d, n) ? "graphml" : "wpoly");
+    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL, 0644);
+    if (fd < 0) {
+        if (errno == EEXIST) return 0;
+        fprintf(stderr, "wskel-fuzz: cannot write %s: %s\n", path, strerror(errno));
+        abort();
+    }
+    if (write(fd, d, n) != (ssize_t)n) abort();
+    close(fd);
+    fprintf(stderr, "wskel-fuzz: %s (%s) saved as %s\n", kind, variant, path);
+    return 1;
+}
+
+/* A geometry finding: kind "invalid", "mismatch" or "ealgo". */
+static void geometry(const char *kind, const char *variant, const char *msg, const uint8_t *d,
+                     size_t n) {
+    int ealgo = strcmp(kind, "ealgo") == 0;
+    const char *dir = getenv(ealgo ? "WSKEL_FUZZ_EALGO_DIR" : "WSKEL_FUZZ_COLLECT");
+    if (!dir || !*dir) dir = ealgo ? getenv("WSKEL_FUZZ_COLLECT") : NULL;
+    const char *abort_ealgo = getenv("WSKEL_FUZZ_EALGO_ABORT");
+    int fatal = ealgo ? abort_ealgo && strcmp(abort_ealgo, "1") == 0 : !dir || !*dir;
+    if (dir && *dir && save(dir, kind, variant, d, n) && !fatal)
+        fprintf(stderr, "wskel-fuzz:   %s\n", msg);
+    if (fatal) finding("%s (variant %s): %s", kind, variant, msg);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+    int fd = memfd_create("wskel-fuzz", MFD_CLOEXEC);
+    if (fd < 0) abort();
+    if (size && write(fd, data, size) != (ssize_t)size) abort();
+    char path[64];
+    snprintf(path, sizeof path, "/proc/self/fd/%d", fd);
+
+    wk_run R;
+    wk_run_init_checked(&R);
+    wk_polygon *P = NULL;
+    wk_status st = wk_polygon_read_file(&R, path, &P);
+    close(fd);
+    check_status(&R, st, P, path);
+    if (st != WK_OK) {
+        close_run(&R, "reader");
+        return 0;
+    }
+    if (is_graphml(data, size) ? bytes_graphml_refusable(data, size)
+                               : bytes_wpoly_refusable(data, size))
+        finding("accepted an input with bytes the format does not allow");
+    check_accepted(&R, P);
+    if (P->n <= MAX_N) {
+        const wk_variant *ref = wk_variant_reference(), *V;
+        int ref_valid = 0;
+        uint32_t ref_nodes = 0, ref_arcs = 0;
+        for (size_t i = 0; (V = wk_variant_at(i)) != NULL; i++) {
+            const char *name = wk_variant_name(V);
+            char msg[1024];
+            wk_run Rv;
+            wk_run_init_checked(&Rv);
+            wk_skeleton *S = NULL;
+            wk_status s = wk_solve_checked(&Rv, V, P, 0, &S, NULL, NULL, NULL);
+            wk_error_format(&Rv, msg, sizeof msg);
+            if (s != Rv.err.code)
+                finding("variant %s returned %s but recorded %s", name, wk_status_name(s),
+                        wk_status_name(Rv.err.code));
+            if (s == WK_OK) {
+                if (!S) finding("variant %s: WK_OK without a skeleton", name);
+                wk_status v = wk_validate(&Rv, P, S, 0, NULL);
+                wk_error_format(&Rv, msg, sizeof msg);
+                if (v == WK_EINVALID) {
+                    geometry("invalid", name, msg, data, size);
+                } else if (v != WK_OK) {
+                    finding("validator returned %s on variant %s's skeleton: %s",
+                            wk_status_name(v), name, msg);
+                } else if (V == ref) {
+                    ref_valid = 1;
+                    ref_nodes = S->n_nodes;
+                    ref_arcs = S->n_arcs;
+                } else if (ref_valid && (S->n_nodes != ref_nodes || S->n_arcs != ref_arcs)) {
+                    snprintf(msg, sizeof msg, "%u nodes %u arcs, %s has %u nodes %u arcs",
+                             S->n_nodes, S->n_arcs, wk_variant_name(ref), ref_nodes, ref_arcs);
+                    geometry("mismatch", name, msg, data, size);
+                }
+                wk_skeleton_free(&Rv, S);
+            } else {
+                if (S) finding("variant %s: %s with a skeleton", name, wk_status_name(s));
+                if (s == WK_EALGO)
+                    geometry("ealgo", name, msg, data, size);
+                else if (s == WK_EINVALID) /* the variant checked its own output */
+                    geometry("invalid", name, msg, data, size);
+                else if (!(s == WK_EUNSUPPORTED && V != ref))
+                    finding("variant %s returned %s on a valid polygon: %s", name,
+                            wk_status_name(s), msg);
+            }
+            close_run(&Rv, name);
+        }
+    }
+    wk_polygon_free(&R, P);
+    close_run(&R, "reader");
+    return 0;
+}
