@@ -1,6 +1,15 @@
 # wskel: weighted straight skeletons.  `make` builds the library and the
 # programs, `make test` runs every test (also under ASan/UBSan), `make bench`
 # runs the default sweep.  See README.md.
+# Fresh machine: `make bench` and `make test` first run the idempotent
+# dependency install (.ci/install-deps: a no-op when every package is there),
+# here, before the flags below are read from pkg-config and the CGAL headers
+# looked for, so that one command works on a bare Debian 12.
+ifneq ($(filter bench test,$(MAKECMDGOALS)),)
+ifneq ($(shell bash .ci/install-deps >&2 && echo ok),ok)
+$(error bash .ci/install-deps failed (see above); install the packages it names, then run make again)
+endif
+endif
 CC      ?= cc
 CXX     ?= g++
 PY      := /usr/bin/python3
@@ -41,7 +50,7 @@ ifneq ($(HAVE_BENCH),)
 PROGS += bin/wskel-bench
 endif
 
-.PHONY: all test test-unit test-asan test-cli test-py bench curves regress clean setup
+.PHONY: all test test-unit test-asan test-cli test-py bench curves regress clean setup stress stress-quick
 
 all: $(LIB) $(GENLIB) $(PROGS)
 
@@ -102,12 +111,54 @@ test-py: all
 	$(PY) tests/test_degenerate.py
 	$(PY) tests/test_cgal_agreement.py
 	$(PY) tests/test_scripts.py
+	$(MAKE) --no-print-directory stress-quick
+
+# The stress sweep (tests/stress/stress.py): 10^4 polygons of every generator
+# family and the degenerate makers through every variant, 2 jobs, 20 s per
+# run; failing inputs and the summary in results/stress/.  Fails while any
+# case fails.  stress-quick (part of make test): the first 300 cases, which
+# must fail exactly as tests/data/stress/KNOWN says.
+STRESS_FLAGS ?=
+stress: all
+	$(PY) tests/stress/stress.py --cases 10000 --jobs 2 --timeout 20 --out results/stress $(STRESS_FLAGS)
+stress-quick: all
+	$(PY) tests/stress/stress.py --quick --jobs 2 --timeout 20
 
 setup:
 	bash .ci/install-deps
 
 clean:
 	rm -rf $(B) $(BA) bin
+
+# Fuzzing (tests/fuzz/README.md): libFuzzer targets built by clang with
+# ASan/UBSan against the library sources compiled the same way into
+# build/fuzz/ (not the gcc-built library).  `make fuzz` runs each
+# target for FUZZ_SECONDS from its committed seeds tests/fuzz/corpus/T/; new
+# corpus entries go to build/fuzz/corpus/T/, findings to build/fuzz/findings/
+# (FUZZ_DIR=DIR puts all of it elsewhere, e.g. out of reach of make clean).
+FUZZ_CC      ?= clang
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS := wpoly graphml variants
+FUZZ_DIR     ?= $(B)/fuzz
+BF := $(FUZZ_DIR)
+# The library sources keep -Wall -Wextra without -Werror here: the gcc build
+# (make) is the one whose warnings are errors; the targets themselves have it.
+FUZZ_CFLAGS := $(CSTD) -Wall -Wextra -O1 -g -fno-omit-frame-pointer -fopenmp \
+               -fsanitize=address,undefined -fno-sanitize-recover=all -Iengine -Ivariants $(XML_CFLAGS)
+.PHONY: fuzz fuzz-build
+# Objects made by the pattern rules below are kept (not intermediate files).
+.SECONDARY: $(LIB_SRC:%.c=$(BF)/%.o) $(FUZZ_TARGETS:%=$(BF)/tests/fuzz/fuzz_%.o)
+fuzz-build: $(FUZZ_TARGETS:%=$(BF)/fuzz_%)
+fuzz: fuzz-build
+	@for t in $(FUZZ_TARGETS); do FUZZ_DIR=$(BF) bash tests/fuzz/run.sh $$t $(FUZZ_SECONDS) || exit 1; done
+$(BF)/%.o: %.c $(HDRS)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -c $< -o $@
+$(BF)/tests/fuzz/%.o: tests/fuzz/%.c $(HDRS) $(wildcard tests/fuzz/*.h)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Werror -fsanitize=fuzzer-no-link -c $< -o $@
+$(BF)/fuzz_%: $(BF)/tests/fuzz/fuzz_%.o $(LIB_SRC:%.c=$(BF)/%.o)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $^ -o $@ -lm -lgmp $(XML_LIBS)
 
 # Benchmark targets (bench, curves, regress) live with the harness.
 -include bench/bench.mk

@@ -16,9 +16,13 @@ coincident nodes and compares arc for arc, faces and times included.
   * TestGenerated: bin/wskel-gen families x n in {8, 20, 50, 200, 500} x seeds,
     wskel against CGAL; one summary line per family on stderr.
 
-A missing binary skips the tests that need it (say which); when the binaries
-exist, any disagreement fails.  Failing inputs are copied to a directory
-named in the failure message so they can be replayed.
+A missing binary skips the tests that need it (say which), except with
+CI=true (.ci/run exports it): then a missing bin/wskel-cgal (or any other
+binary) fails them, so CI cannot pass without comparing.  When the binaries
+exist, any disagreement fails, and so does a test that compared nothing
+(every case skipped, not generated or cut by the time budget).  Failing
+inputs are copied to a directory named in the failure message so they can
+be replayed.
 
 Environment:
   WSKEL_BIN, WSKEL_GEN_BIN, WSKEL_CGAL_BIN  override bin/wskel, bin/wskel-gen,
@@ -146,6 +150,7 @@ def report(test, what, outcomes, detail=""):
         else:
             t.case([] if o.verdict == "same" else ["%s: %s" % (o.name, o.why)], o.path)
     t.report(test, detail, limit=10, hint=REPLAY)
+    test.assertGreater(t.cases, 0, "%s: nothing compared (%s)" % (what, t.summary()))
 
 
 # -------------------------------------------------- face bookkeeping
@@ -421,6 +426,30 @@ class TestCgalBaseline(unittest.TestCase):
         self.assertFalse(os.path.exists(out) or os.path.exists(out + ".tmp"))
 
 
+class TestCiPolicy(unittest.TestCase):
+    """need(): a missing program skips the test, but fails it under CI=true."""
+
+    def test_missing_program_skips_or_fails(self):
+        missing = os.path.join(tl.ROOT, "bin", "no-such-program")
+        old = os.environ.get("CI")
+        try:
+            os.environ["CI"] = "false"
+            with self.assertRaises(unittest.SkipTest):
+                need(missing)
+            os.environ["CI"] = "true"
+            with self.assertRaisesRegex(AssertionError, "CI=true.*not a skip"):
+                need(missing)
+        finally:
+            if old is None:
+                del os.environ["CI"]
+            else:
+                os.environ["CI"] = old
+
+    def test_ci_run_exports_ci(self):
+        with open(os.path.join(tl.ROOT, ".ci", "run")) as f:
+            self.assertRegex(f.read(), r"(?m)^export CI=true$")
+
+
 class TestHandMade(unittest.TestCase):
     """Small polygons with exact degeneracies: vertex events of high degree
     (regular polygons, square), parallel edges, collinear vertices."""
@@ -499,9 +528,8 @@ class TestGenerated(unittest.TestCase):
             with concurrent.futures.ThreadPoolExecutor(JOBS) as ex:
                 outcomes = list(ex.map(one, cases))
             nogen = [o for o in outcomes if o.verdict == "nogen"]
-            if len(nogen) == len(outcomes):
-                raise unittest.SkipTest("wskel-gen cannot make family %s: %s"
-                                        % (fam, nogen[0].why))
+            if len(nogen) == len(outcomes):  # a family that makes nothing tests nothing
+                self.fail("wskel-gen cannot make family %s: %s" % (fam, nogen[0].why))
             report(self, "CGAL agreement, family %s" % fam, outcomes,
                    "n in %s, %d seeds" % (SIZES, SEEDS))
         finally:

@@ -7,6 +7,12 @@ horseshoe, a tiny coastline 1e6 from the origin); monotone polygons turned
 in random directions, with runs of collinear vertices (the monotone variant
 must not refuse them).  Known failures, if any, are listed in KNOWN_FAILURES.
 
+No input is skipped silently: every input is required (the reader rejecting
+it fails the test) except a generated case that degenerates away (fewer than
+three vertices left); skipped inputs and known failures are counted and each
+is named on stderr, and each test asserts how many cases it ran.  The
+monotone variant's refusals of polygons not known to be monotone are counted.
+
 Polygons on small integer grids are as degenerate as real inputs get:
 parallel and collinear edges, equal lengths, rays through vertices, several
 events at one instant and one place.  Found this way (and kept in
@@ -46,6 +52,10 @@ MONO_CASES = int(os.environ.get("WSKEL_MONO_CASES", "400"))
 # collapsing flat cycles and is kept as tests/data/degenerate/flat_cycle_far.wpoly.
 KNOWN_FAILURES = {}
 DATA = os.path.join(tl.DATA, "degenerate")
+# Kinds of skipped inputs (Tally.skip): counted and every one named in the
+# report; the tests say which inputs are required (a skip is a failure).
+SKIPPED_INPUT = "skipped inputs (rejected by the reader)"
+DEGENERATED = "skipped inputs (degenerated away)"
 VARIANTS = [["arrangement", "--k", "1"], ["arrangement", "--k", "max"], ["monotone"]]
 
 
@@ -206,28 +216,38 @@ class Degenerate(unittest.TestCase):
         rc, _, err = tl.wskel(["--check", "-o", out] + args + [poly])
         return rc, err.strip()
 
-    def check_case(self, name, poly, monotone_required=False):
-        """Returns a list of failure lines (empty: all agree)."""
+    def check_case(self, t, name, poly, required=True, monotone_required=False):
+        """Run naive and every variant on poly and record the case in the
+        Tally t.  An input the reader rejects (naive exit 1) is a failure
+        when required, else a skipped input (counted, named in the report).
+        The monotone variant's refusal of a polygon not known to be monotone
+        is noted too (the other variants are still compared)."""
         fails = []
         ref = os.path.join(self.work, "naive.json")
         rc, err = self.run_variant(["--variant", "naive"], poly, ref)
         if rc == 1:
-            return fails  # the input itself is refused (e.g. a 0-degree spike)
+            if required:
+                t.case(["%s: the reader rejects a required input: %s" % (name, err)], poly)
+            else:
+                t.skip("%s (%s)" % (name, err), SKIPPED_INPUT)
+            return
         if rc != 0:
-            return ["%s: naive exit %d: %s" % (name, rc, err)]
+            t.case(["%s: naive exit %s: %s" % (name, rc, err)], poly)
+            return
         a = cs.load(ref)
         for v in VARIANTS:
             out = os.path.join(self.work, "v.json")
             rc, err = self.run_variant(["--variant"] + v, poly, out)
             if v[0] == "monotone" and rc == 2 and "not monotone" in err and not monotone_required:
+                t.skip(name, "refused by monotone (not monotone; naive and arrangement compared)")
                 continue
             if rc != 0:
-                fails.append("%s: %s exit %d: %s" % (name, " ".join(v), rc, err))
+                fails.append("%s: %s exit %s: %s" % (name, " ".join(v), rc, err))
                 continue
             res = cs.compare(a, cs.load(out))
             if not res.identical:
                 fails.append("%s: %s differs from naive: %s" % (name, " ".join(v), res.summary()))
-        return fails
+        t.case(fails, poly)
 
     def test_files(self):
         names = sorted(f for f in os.listdir(DATA) if f.endswith(".wpoly"))
@@ -235,53 +255,68 @@ class Degenerate(unittest.TestCase):
         t = tl.Tally("degenerate files")
         for f in names:
             path = os.path.join(DATA, f)
-            t.case(self.check_case(f, path), path)
-        t.report(self, limit=len(names))
+            self.check_case(t, f, path)
+        t.report(self, limit=len(names), list_skipped=[SKIPPED_INPUT])
+        self.assertEqual(t.cases, len(names), t.summary())
 
     def write(self, pts, w, comment=None):
         return tl.write_wpoly(os.path.join(self.work, "case.wpoly"), pts, w, comment)
 
     def test_generated(self):
+        """Every case is required: the generator's 2000 polygons are all valid
+        (a rejection means the reader changed); a case that degenerates away
+        (fewer than 3 vertices left) is a skipped input, named in the report."""
         t = tl.Tally("degenerate generated")
         for seed in range(1, CASES + 1):
             case = generated(seed)
             if case is None:
-                t.skip("case %d" % seed, "degenerated away")
+                t.skip("case %d" % seed, DEGENERATED)
                 continue
             pts, w = case
             path = self.write(pts, w, "test_degenerate.py case %d" % seed)
-            t.case(self.check_case("case %d" % seed, path), path)
-        t.report(self)
+            self.check_case(t, "case %d" % seed, path)
+        t.report(self, list_skipped=[DEGENERATED])
+        self.assertGreater(t.cases, 0, t.summary())
+        # A few may degenerate away; most must run.
+        self.assertGreaterEqual(t.cases, 0.9 * CASES, t.summary())
 
     def test_real_like(self):
         """Coastlines, glyph outlines, a far-off tiny polygon: every variant
         equals naive (the validator once rejected naive's skeleton of the
-        far-off one)."""
+        far-off one).  Every input is required."""
         t = tl.Tally("degenerate real-like")
         for seed in range(REAL_CASES):
             name, pts, w = real_like(seed)
             path = self.write(pts, w, name)
-            t.case(self.check_case(name, path), path)
+            self.check_case(t, name, path)
         t.report(self)
+        self.assertEqual(t.cases, REAL_CASES, t.summary())
 
     def test_monotone_any_direction(self):
         """Monotone by construction, so the monotone variant must not refuse;
         nearly flat reflex vertices once made it do so, and naive failed on
-        nearly collinear edges of different weight."""
+        nearly collinear edges of different weight.  Every input is
+        required; a known failure (KNOWN_FAILURES) must fail as listed and is
+        named in the report."""
         t = tl.Tally("degenerate monotone in any direction")
         for seed in range(1, MONO_CASES + 1):
             name, pts, w = monotone_any_direction(seed)
             path = self.write(pts, w, name)
-            got = self.check_case(name, path, monotone_required=True)
             if seed in KNOWN_FAILURES:
+                sub = tl.Tally(name)
+                self.check_case(sub, name, path, monotone_required=True)
+                got = sub.failures
                 if not got or not all(KNOWN_FAILURES[seed] in g for g in got):
-                    got = ["%s: known failure '%s' changed: %s" %
-                           (name, KNOWN_FAILURES[seed], got or "now passes")]
+                    t.case(["%s: known failure '%s' changed: %s" %
+                            (name, KNOWN_FAILURES[seed], got or "now passes")], path)
                 else:
                     t.skip(name, "known failures")
-                    continue
-            t.case(got, path)
-        t.report(self)
+                continue
+            self.check_case(t, name, path, monotone_required=True)
+        t.report(self, list_skipped=["known failures"])
+        self.assertEqual(t.cases + len(t.skipped.get("known failures", [])), MONO_CASES,
+                         t.summary())
+        self.assertGreater(t.cases, 0, t.summary())
 
 
 if __name__ == "__main__":

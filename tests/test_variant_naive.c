@@ -237,6 +237,8 @@ static void property_family(const char *family) {
         if (refused) fprintf(stderr, " (%u cases refused by the generator)\n", refused);
         cr_expect_eq(valid, total, "%s %s: only %u of %u skeletons valid", family, wfmt, valid,
                      total);
+        cr_expect_gt(total, 0, "%s %s: the generator refused every case", family,
+                     PROP_W[wi]);
         fam_total += total;
         fam_valid += valid;
     }
@@ -341,6 +343,7 @@ Test(naive, convex_family_closed_form, .timeout = 300) {
             "naive convex closed form: generator %u/%u on the envelope (worst error %.3g of the "
             "time tolerance)\n",
             good, total, worst_rel);
+    cr_assert_gt(total, 0);
     cr_expect_eq(good, total);
 }
 

@@ -4,12 +4,15 @@ tests/test_degenerate.py, tests/test_cgal_agreement.py).
   ROOT, DATA                    the repository and tests/data
   WSKEL, WSKEL_GEN, WSKEL_CGAL  bin/wskel, bin/wskel-gen, bin/wskel-cgal, or
                                 what WSKEL_BIN, WSKEL_GEN_BIN, WSKEL_CGAL_BIN say
-  have(), need()                a program is built; skip the test unless
+  have(), need()                a program is built; skip the test unless (fail
+                                unless, when CI=true: in CI nothing is skipped)
   run()                         a command with a time limit: (exit, stdout, stderr)
   wskel(), wskel_json()         bin/wskel with arguments; its JSON output parsed
   list_counters()               what `bin/wskel --list-counters --variant V` prints
   read_wpoly(), write_wpoly()   .wpoly files
   cs                            scripts/compare_skeletons.py
+  same_skeleton()               two wskel-1 skeletons of one polygon compared as
+                                tests/helpers.h's same_skeleton (merging)
   Tally                         pass/fail counts of a test's cases: one summary
                                 line on stderr, one failure naming them all
 
@@ -18,7 +21,9 @@ Import it from a test with
     import testlib
 """
 
+import collections
 import json
+import math
 import os
 import re
 import shutil
@@ -34,8 +39,9 @@ WSKEL_GEN = os.environ.get("WSKEL_GEN_BIN", os.path.join(ROOT, "bin", "wskel-gen
 WSKEL_CGAL = os.environ.get("WSKEL_CGAL_BIN", os.path.join(ROOT, "bin", "wskel-cgal"))
 TIMEOUT = 120  # seconds for one program run: a hang is a failure, not a wait
 
-__all__ = ["ROOT", "DATA", "WSKEL", "WSKEL_GEN", "WSKEL_CGAL", "TIMEOUT", "have", "need", "run",
-           "wskel", "wskel_json", "list_counters", "read_wpoly", "write_wpoly", "cs", "Tally"]
+__all__ = ["ROOT", "DATA", "WSKEL", "WSKEL_GEN", "WSKEL_CGAL", "TIMEOUT", "have", "in_ci", "need",
+           "run", "wskel", "wskel_json", "list_counters", "read_wpoly", "write_wpoly", "cs",
+           "same_skeleton", "Tally"]
 
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import compare_skeletons as cs  # noqa: E402,F401
@@ -48,11 +54,22 @@ def have(path):
     return os.path.isfile(path) and os.access(path, os.X_OK)
 
 
+def in_ci():
+    """CI=true in the environment (.ci/run exports it; so do GitHub Actions)."""
+    return os.environ.get("CI", "").lower() == "true"
+
+
 def need(*paths):
     """Skip the calling test (or class, from setUpClass) unless every program
-    exists; the message names the missing ones."""
+    exists; the message names the missing ones.  With CI=true a missing
+    program fails the test instead: a CI run that skips its checks passes on
+    nothing."""
     missing = [os.path.relpath(p, ROOT) for p in paths if not have(p)]
     if missing:
+        if in_ci():
+            raise AssertionError("not built: %s (CI=true: a missing program is a failure, "
+                                 "not a skip; .ci/install-deps installs what it needs, then make)"
+                                 % ", ".join(missing))
         raise unittest.SkipTest("not built yet: %s (run make)" % ", ".join(missing))
 
 
@@ -135,6 +152,94 @@ def write_wpoly(path, pts, ws=None, comment=None):
     return path
 
 
+# ---------------------------------------------------------- comparison
+
+def same_skeleton(a, b, tol=None, tol_t=None):
+    """Are the wskel-1 skeleton dicts a and b (of one polygon) the same
+    skeleton?  Returns (True, "") or (False, the first difference).
+
+    As same_skeleton of tests/helpers.h with merge = true (the C sweeps'
+    oracle): the input vertices (the first n nodes) must coincide within tol
+    with t = 0 on both sides; any two nodes, of either skeleton, within tol
+    in x and in y and within tol_t in t are one node, transitively; arcs whose
+    ends fall into one node are dropped; the others, as (node, node, left
+    face, right face) with the ends in a fixed order, must be equal
+    multisets.  Unlike scripts/compare_skeletons.py, nodes at one place but
+    at different times stay apart (a nearly regular polygon has many nodes
+    within tol of its centre whose times differ by more than tol).
+    Defaults: tol = 1e-7 * the input's bounding-box diagonal, but at least
+    64 ulps of the largest coordinate; tol_t = tol (the JSON has no weights:
+    times err by position errors over the weight, so pass tol / the smallest
+    weight when weights go below 1)."""
+    na, nb = a["n"], b["n"]
+    if na != nb:
+        return False, "%d vs %d input vertices" % (na, nb)
+    n = na
+    A, B = a["nodes"], b["nodes"]
+    if tol is None:
+        xs = [p[0] for p in A[:n]]
+        ys = [p[1] for p in A[:n]]
+        mag = max(max(abs(v) for v in xs), max(abs(v) for v in ys))
+        tol = max(1e-7 * math.hypot(max(xs) - min(xs), max(ys) - min(ys)), 64 * mag * 2.0 ** -52)
+    if tol_t is None:
+        tol_t = tol
+    for j in range(n):
+        p, q = A[j], B[j]
+        if not (abs(p[0] - q[0]) <= tol and abs(p[1] - q[1]) <= tol and p[2] == q[2] == 0):
+            return False, "input vertex %d: (%.17g, %.17g, t %g) vs (%.17g, %.17g, t %g)" % (
+                j, p[0], p[1], p[2], q[0], q[1], q[2])
+    nodes = list(A) + list(B)
+    off = len(A)
+    par = list(range(len(nodes)))
+
+    def find(x):
+        while par[x] != x:
+            par[x] = par[par[x]]
+            x = par[x]
+        return x
+    for j in range(n):
+        par[off + j] = j
+    cells = {}
+    for i, (x, y, t) in enumerate(nodes):
+        kx, ky = (math.floor(x / tol), math.floor(y / tol)) if tol > 0 else (x, y)
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                for k in cells.get((kx + dx, ky + dy), ()):
+                    q = nodes[k]
+                    if abs(q[0] - x) <= tol and abs(q[1] - y) <= tol and abs(q[2] - t) <= tol_t:
+                        ri, rk = find(i), find(k)
+                        if ri != rk:
+                            par[max(ri, rk)] = min(ri, rk)
+        cells.setdefault((kx, ky), []).append(i)
+
+    def arcs(S, o):
+        out = []
+        for u, v, left, right in S["arcs"]:
+            cu, cv = find(u + o), find(v + o)
+            if cu == cv:
+                continue
+            out.append((cu, cv, left, right) if cu <= cv else (cv, cu, right, left))
+        return sorted(out)
+    xa, xb = arcs(a, 0), arcs(b, off)
+    if xa == xb:
+        return True, ""
+    ca, cb = collections.Counter(xa), collections.Counter(xb)
+    only_a, only_b = list((ca - cb).elements()), list((cb - ca).elements())
+
+    def show(arc):
+        u, v, left, right = arc
+        p, q = nodes[u], nodes[v]
+        return "(%.9g, %.9g, t %.9g) - (%.9g, %.9g, t %.9g) faces %d | %d" % (
+            p[0], p[1], p[2], q[0], q[1], q[2], left, right)
+    why = "%d arcs only in A, %d only in B (tol %.3g, tol_t %.3g; %d vs %d arcs after merging)" % (
+        len(only_a), len(only_b), tol, tol_t, len(xa), len(xb))
+    if only_a:
+        why += "; first only in A: " + show(only_a[0])
+    if only_b:
+        why += "; first only in B: " + show(only_b[0])
+    return False, why
+
+
 # ------------------------------------------------------------- verdicts
 
 class Tally:
@@ -181,10 +286,16 @@ class Tally:
                                          " (%s)" % detail if detail else "",
                                          "; " + "; ".join(notes) if notes else "")
 
-    def report(self, test, detail="", limit=20, hint=None):
-        """Print the summary to stderr; fail `test` with the first `limit`
-        failure lines if there are any (and where their inputs are kept)."""
+    def report(self, test, detail="", limit=20, hint=None, list_skipped=()):
+        """Print the summary to stderr, and every entry of the skip kinds in
+        list_skipped (e.g. the skipped inputs, so none is skipped silently);
+        fail `test` with the first `limit` failure lines if there are any
+        (and where their inputs are kept)."""
         print(self.summary(detail), file=sys.stderr)
+        for kind in list_skipped:
+            if self.skipped.get(kind):
+                print("  %s: %d: %s" % (kind, len(self.skipped[kind]),
+                                        "; ".join(self.skipped[kind])), file=sys.stderr)
         if not self.failures:
             return
         lines = ["%s: %d of %d cases failed%s" % (
