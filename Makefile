@@ -101,7 +101,7 @@ test: all test-unit test-asan test-cli test-py test-bench
 test-unit: $(B)/tests/run_tests
 	$(B)/tests/run_tests --jobs 2
 test-asan: $(BA)/tests/run_tests $(BA)/wskel
-	WSKEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BA)/tests/run_tests --jobs 2
+	WSKEL_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp UBSAN_OPTIONS=print_stacktrace=1 $(BA)/tests/run_tests --jobs 2
 	WSKEL_BIN=$(BA)/wskel WSKEL_DEGENERATE_CASES=400 WSKEL_MONO_CASES=150 WSKEL_REAL_CASES=8 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(PY) tests/test_degenerate.py
 test-cli: all
 	bash tests/cli_tests.sh
