@@ -6,14 +6,17 @@
 ** Each trace of a chain is cut at the points where M' crossed it (merge.c
 ** recorded them with their distance along the trace), and each piece is kept
 ** iff it lies on its chain's side of M'.  The side is decided locally:
-**   - a piece that starts where M' crossed (merge node m) is kept iff its
-**     direction lies strictly inside m's sector on the chain's side: for
-**     the upper chain counter-clockwise from M''s outgoing direction to its
-**     reversed incoming one, for the lower chain the other way round; a
-**     piece along M' itself is not kept (M''s arc stands for it);
+**   - a piece that starts where M' crossed the trace's interior is not kept:
+**     M' passed from one of the trace's faces to the other there, so the
+**     trace changes sides, and the piece before must have been kept (else
+**     the merge is not certified, below);
 **   - a piece that starts at a chain node inherits the side from the traces
 **     that ended there (input vertices are on their own side), or, if M'
-**     passes through that node, the sector test at that merge node.
+**     passes through that node (merge node m), it is kept iff its direction
+**     lies strictly inside m's sector on the chain's side: for the upper
+**     chain counter-clockwise from M''s outgoing direction to its reversed
+**     incoming one, for the lower chain the other way round; a piece along
+**     M' itself is not kept (M''s arc stands for it).
 ** Traces are created in time order, so every start node is decided before
 ** the traces leaving it are cut.  Nodes and arcs the pieces need are
 ** created on demand; then M''s arcs; then pass-through nodes are merged and
@@ -159,8 +162,20 @@ static wk_status clip_chain(asm_ctx *A, uint32_t c, uint32_t *ci) {
                                "polygon's wavefront loses reaches the merge chain (001's "
                                "merge assumes it cannot)",
                                M->mn[m].p.x, M->mn[m].p.y, c);
-            /* past the crossing: decide the next piece at the merge node */
-            side = on_side(M, c, m, D) ? ST_KEPT : ST_CUT;
+            /* Past a crossing inside the trace the trace is on the other side
+            ** of M': M' crossed it there (it left one of the trace's faces
+            ** for the other, and each face lies on one side of the trace),
+            ** and the piece before was kept (just checked).  Not decided by
+            ** the directions at the merge node: several crossings within
+            ** eps_d join one node, so the node is up to eps_d off this
+            ** crossing, and where M' and the traces are nearly parallel (the
+            ** thin faces between nearly vertical edges of a polygon with
+            ** 10^5 and more vertices) a piece's direction from the node then
+            ** differs from the true one by more than its angle to M': the
+            ** pieces of two traces ending at one node were put on different
+            ** sides ("on both sides of the merge chain"), and the polygon
+            ** went to the reference wavefront at O(n r) (README.md). */
+            side = ST_CUT;
             from = M->mn[m].sk;
             from_is_start = false;
         }

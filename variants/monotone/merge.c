@@ -9,7 +9,7 @@
 ** the axis of two walls perpendicular to the sweep that face each other
 ** from different chains (non-strict case: a bar of an H shape).  The next vertex is
 ** the first point east where this ray leaves the upper or the lower face
-** through one of its walls (monotone_internal.h); crossing a trace moves to
+** through one of its walls (monotone.h); crossing a trace moves to
 ** the face on its other side.  The walk ends when the faces are those of the
 ** two edges at v_e and v_e comes before any crossing.
 **
@@ -63,12 +63,15 @@ static double level(const wk_offset_line *L, wk_point q) {
 
 /* Do the roof planes of edges a and b coincide (parallel, same side, equal
 ** weights, same line)?  Then their "bisector" is a whole plane and M' follows
-** the wavefront vertex between them, which moves along their normal. */
+** the wavefront vertex between them, which moves along their normal.  Same
+** line: within eps_d (the offsets c are computed from the coordinates, so
+** their rounding grows with the distance from the origin; a time tolerance
+** here would shrink with WK_TOL_TIME). */
 static bool coplanar(const mono *M, uint32_t a, uint32_t b) {
     const wk_offset_line *A = &M->L[a], *B = &M->L[b];
     double gx = A->nx / A->w - B->nx / B->w, gy = A->ny / A->w - B->ny / B->w;
     if (fabs(gx) + fabs(gy) > 1e-12 * (1 / A->w + 1 / B->w)) return false;
-    return fabs(A->c / A->w - B->c / B->w) <= M->eps_t;
+    return fabs(A->c - B->c) <= M->eps_d;
 }
 
 static bool excluded(const walk *W, uint32_t c, uint32_t v) {

@@ -2,7 +2,7 @@
 ** monotone.c: the monotone variant's entry (001: O(n log n) positively
 ** weighted straight skeletons of monotone polygons).
 **
-** Steps (monotone_internal.h has the shared model): find a direction of
+** Steps (monotone.h has the shared model): find a direction of
 ** monotonicity or refuse (WK_EUNSUPPORTED, CLI exit 2); simulate the lower and the
 ** upper chain, each extended by rays (edge collapses only); walk the merge
 ** chain from v_w to v_e; clip the chain skeletons to their sides of it;
@@ -36,8 +36,9 @@ static wk_status monotone_merge_run(mono *M, wk_skeleton **out) {
     const wk_polygon *P = M->P;
     double wmax = 0;
     for (uint32_t i = 0; i < P->n; i++) wmax = P->w[i] > wmax ? P->w[i] : wmax;
-    M->eps_d = WK_TOL_REL * wk_polygon_scale(P);
-    M->eps_t = M->eps_d / wmax;
+    /* the engine's policy (tolerance.h), as the wavefront has it */
+    M->eps_d = R->opt.tol_scale * WK_TOL_REL * wk_polygon_scale(P);
+    M->eps_t = WK_TOL_TIME * M->eps_d / wmax;
     wk_status st;
     M->L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
     if (!M->L) return R->err.code;

@@ -54,6 +54,14 @@
 
 WK_VARIANT_COUNTER_ENUM(MONO_COUNTER_LIST)
 
+/* The direction's tolerance is WK_MONO_DIR_TOL (tolerance.h, with its
+** reason).  MONO_DIR_RUNS_MAX: at most this many separate ranges of good
+** directions (widest first) are tried as sweep directions (direction.c);
+** each try costs O(n).  One or two occur in practice (a range can be split
+** only where it wraps around angle 0, or at single directions perpendicular
+** to edges); the bound keeps a pathological input at O(n) tries. */
+#define MONO_DIR_RUNS_MAX 16
+
 /* Trace of one wavefront vertex of a chain (see the top). */
 typedef struct mono_trace {
     wk_point p0;      /* position at t0 (its start node) */
@@ -118,7 +126,7 @@ typedef struct mono {
     wk_point d;             /* east (unit) */
     bool strict;            /* no edge is perpendicular to d */
     uint32_t vw, ve;        /* westmost / eastmost vertex (chain ends) */
-    double eps_d, eps_t;    /* the engine's tolerance policy (wskel.h) */
+    double eps_d, eps_t;    /* the engine's tolerance policy (tolerance.h) */
     mono_chain ch[2];       /* 0: lower, 1: upper */
     mono_mnode *mn;
     uint32_t n_mn, cap_mn;
