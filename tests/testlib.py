@@ -114,26 +114,36 @@ def list_counters(variant=None):
 
 # ------------------------------------------------------------ polygons
 
+def parse_wpoly(text, name="<text>"):
+    """(points, weights, comment lines) of .wpoly text in input order.  '#'
+    lines (kept as comments) and blank lines are ignored, the first other
+    line is n, then n lines 'x y [w]' (w, default 1, weights the edge to the
+    next vertex).  ValueError, naming `name`, if malformed."""
+    pts, ws, comments, n = [], [], [], None
+    for line in text.splitlines():
+        s = line.strip()
+        if not s:
+            continue
+        if s.startswith("#"):
+            comments.append(s[1:].strip())
+            continue
+        if n is None:
+            n = int(s)
+            continue
+        v = [float(c) for c in s.split()]
+        if len(v) not in (2, 3):
+            raise ValueError("%s: line %r is not 'x y [w]'" % (name, s))
+        pts.append((v[0], v[1]))
+        ws.append(v[2] if len(v) > 2 else 1.0)
+    if n is None or n != len(pts):
+        raise ValueError("%s: header says %s vertices, found %d" % (name, n, len(pts)))
+    return pts, ws, comments
+
+
 def read_wpoly(path):
-    """(points, weights) in input order.  '#' lines and blank lines are
-    ignored, the first other line is n, then n lines 'x y [w]' (w, default 1,
-    weights the edge to the next vertex).  ValueError if malformed."""
-    pts, ws, n = [], [], None
+    """(points, weights) of the .wpoly file at path (parse_wpoly)."""
     with open(path) as f:
-        for line in f:
-            s = line.strip()
-            if not s or s.startswith("#"):
-                continue
-            if n is None:
-                n = int(s)
-                continue
-            v = [float(c) for c in s.split()]
-            if len(v) not in (2, 3):
-                raise ValueError("%s: line %r is not 'x y [w]'" % (path, s))
-            pts.append((v[0], v[1]))
-            ws.append(v[2] if len(v) > 2 else 1.0)
-    if n != len(pts):
-        raise ValueError("%s: header says %s vertices, found %d" % (path, n, len(pts)))
+        pts, ws, _ = parse_wpoly(f.read(), path)
     return pts, ws
 
 

@@ -50,6 +50,10 @@ one number for positions and times).
 import math
 import os
 import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import testlib  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 WSKEL_GEN = os.environ.get("WSKEL_GEN_BIN", os.path.join(ROOT, "bin", "wskel-gen"))
@@ -86,27 +90,8 @@ def wpoly_body(pts, ws):
 
 
 def parse_wpoly(text):
-    """(points, weights, comment lines) of .wpoly text; ValueError if
-    malformed."""
-    pts, ws, comments, n = [], [], [], None
-    for line in text.splitlines():
-        s = line.strip()
-        if not s:
-            continue
-        if s.startswith("#"):
-            comments.append(s[1:].strip())
-            continue
-        if n is None:
-            n = int(s)
-            continue
-        v = [float(c) for c in s.split()]
-        if len(v) not in (2, 3):
-            raise ValueError("line %r is not 'x y [w]'" % s)
-        pts.append((v[0], v[1]))
-        ws.append(v[2] if len(v) > 2 else 1.0)
-    if n is None or n != len(pts):
-        raise ValueError("header says %s vertices, found %d" % (n, len(pts)))
-    return pts, ws, comments
+    """(points, weights, comment lines) of .wpoly text (testlib's parser)."""
+    return testlib.parse_wpoly(text)
 
 
 # ------------------------------------------------------------- geometry
