@@ -9,7 +9,7 @@ tests/test_degenerate.py, tests/test_cgal_agreement.py).
   run()                         a command with a time limit: (exit, stdout, stderr)
   wskel(), wskel_json()         bin/wskel with arguments; its JSON output parsed
   list_counters()               what `bin/wskel --list-counters --variant V` prints
-  read_wpoly(), write_wpoly()   .wpoly files
+  parse_wpoly(), read_wpoly(), write_wpoly()   .wpoly text and files
   cs                            scripts/compare_skeletons.py
   same_skeleton()               two wskel-1 skeletons of one polygon compared as
                                 tests/helpers.h's same_skeleton (merging)
@@ -40,7 +40,8 @@ WSKEL_CGAL = os.environ.get("WSKEL_CGAL_BIN", os.path.join(ROOT, "bin", "wskel-c
 TIMEOUT = 120  # seconds for one program run: a hang is a failure, not a wait
 
 __all__ = ["ROOT", "DATA", "WSKEL", "WSKEL_GEN", "WSKEL_CGAL", "TIMEOUT", "have", "in_ci", "need",
-           "run", "wskel", "wskel_json", "list_counters", "read_wpoly", "write_wpoly", "cs",
+           "run", "wskel", "wskel_json", "list_counters", "parse_wpoly", "read_wpoly",
+           "write_wpoly", "cs",
            "same_skeleton", "Tally"]
 
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
