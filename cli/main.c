@@ -242,11 +242,9 @@ int main(int argc, char **argv) {
         rc = report(&R, verbose);
         goto done;
     }
-    if (check) {
-        if (stats)
-            fprintf(stderr, "check: ok (%u nodes, %u arcs, max distance error %.3g, area error %.3g)\n",
-                    rep.nodes, rep.arcs, rep.max_distance_error, rep.area_error);
-    }
+    if (check && stats)
+        fprintf(stderr, "check: ok (%u nodes, %u arcs, max distance error %.3g, area error %.3g)\n",
+                rep.nodes, rep.arcs, rep.max_distance_error, rep.area_error);
 
     if (wk_output_open(&R, &out, outpath) != WK_OK) {
         rc = report(&R, verbose);

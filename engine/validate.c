@@ -466,8 +466,8 @@ static wk_status check_tree(wk_run *R, const wk_polygon *P, const wk_skeleton *S
     uint32_t N = S->n_nodes, n = P->n;
     double tol_t = time_tol(P, tol);
     uint32_t *deg = WK_NEW_ARRAY(R, uint32_t, N);
-    uint32_t *along = deg ? WK_NEW_ARRAY(R, uint32_t, n) : NULL; /* arcs leaving the boundary */
-    uint32_t *parent = along ? WK_NEW_ARRAY(R, uint32_t, N) : NULL;
+    uint32_t *leaving = deg ? WK_NEW_ARRAY(R, uint32_t, n) : NULL; /* arcs leaving the boundary */
+    uint32_t *parent = leaving ? WK_NEW_ARRAY(R, uint32_t, N) : NULL;
     uint32_t *size = parent ? WK_NEW_ARRAY(R, uint32_t, N) : NULL;
     wk_status st = size ? WK_OK : R->err.code;
     if (st != WK_OK) goto done;
@@ -476,17 +476,17 @@ static wk_status check_tree(wk_run *R, const wk_polygon *P, const wk_skeleton *S
         deg[c->a]++;
         deg[c->b]++;
         /* an arc at input vertex a whose other end b is later than t ~ 0 */
-        if (c->a < n && !(fabs(S->nodes[c->b].t) <= tol_t)) along[c->a]++;
-        if (c->b < n && !(fabs(S->nodes[c->a].t) <= tol_t)) along[c->b]++;
+        if (c->a < n && !(fabs(S->nodes[c->b].t) <= tol_t)) leaving[c->a]++;
+        if (c->b < n && !(fabs(S->nodes[c->a].t) <= tol_t)) leaving[c->b]++;
     }
     for (uint32_t v = 0; v < N && st == WK_OK; v++) {
         if (deg[v] == 0)
             st = WK_FAIL(R, WK_EINVALID, P->name, 0, "validate (d): node %u is on no arc", v);
-        else if (v < n && along[v] > 1)
+        else if (v < n && leaving[v] > 1)
             st = WK_FAIL(R, WK_EINVALID, P->name, 0,
                          "validate (d): input vertex %u has %u arcs that leave the boundary (to "
                          "nodes later than t = %.3g); one wavefront vertex starts there",
-                         v, along[v], tol_t);
+                         v, leaving[v], tol_t);
     }
     if (st != WK_OK) goto done;
     for (uint32_t v = 0; v < N; v++) {
@@ -525,7 +525,7 @@ static wk_status check_tree(wk_run *R, const wk_polygon *P, const wk_skeleton *S
 done:
     if (size) WK_FREE_ARRAY(R, size, N);
     if (parent) WK_FREE_ARRAY(R, parent, N);
-    if (along) WK_FREE_ARRAY(R, along, n);
+    if (leaving) WK_FREE_ARRAY(R, leaving, n);
     if (deg) WK_FREE_ARRAY(R, deg, N);
     return st;
 }

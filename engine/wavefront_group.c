@@ -666,7 +666,7 @@ static wk_status run_node(wk_wavefront *W, uint32_t i, double t, uint32_t *node)
 ** surviving piece that extends over it (the one before it, else the one
 ** after it).  Vertices of the run that touch a swept piece end here; new
 ** vertices join the surviving pieces. */
-static wk_status slide(wk_wavefront *W, uint32_t vi, double t) {
+wk_status wf_collinear_rule(wk_wavefront *W, uint32_t vi, double t) {
     wk_run *R = W->R;
     if (!on_one_line(&W->v[vi])) return WK_OK;
     /* run[0]: the vertex before the run's first piece; run[m]: after its
@@ -983,8 +983,6 @@ static wk_status collapse_flat_cycle(wk_wavefront *W, uint32_t f, double t, bool
     return WK_OK;
 }
 
-wk_status wf_collinear_rule(wk_wavefront *W, uint32_t v, double t) { return slide(W, v, t); }
-
 /* Plan the group at node radius W->eps_g: rounds until no vertex is forced
 ** to become a node.  Changes only the group's scratch state. */
 static wk_status plan_rounds(wk_wavefront *W, double t) {
@@ -1018,7 +1016,7 @@ wk_status wf_resolve_group(wk_wavefront *W, double t) {
     /* collinear rule for fresh vertices between parallel edges */
     for (uint32_t i = 0; i < W->n_fresh; i++) {
         uint32_t f = W->fresh[i];
-        if (W->v[f].alive && W->v[f].vkind == WK_VEL_COLLINEAR && slide(W, f, t) != WK_OK)
+        if (W->v[f].alive && W->v[f].vkind == WK_VEL_COLLINEAR && wf_collinear_rule(W, f, t) != WK_OK)
             return R->err.code;
         if (W->v[f].alive && W->v[f].vkind == WK_VEL_ANTIPARALLEL) {
             bool done;
