@@ -29,7 +29,7 @@ curves: $(BENCH_DEPS)
 regress: $(BENCH)
 	@mkdir -p results/latest
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/regress.spec $(BENCH_FLAGS) --out results/latest/regress.csv
-	$(PY) scripts/regress.py results/latest/regress.csv results/baseline/regress.csv
+	$(PY) scripts/regress.py results/latest/regress.csv results/baseline/regress.csv --confirm $(BENCH)
 
 regress-baseline: $(BENCH)
 	@mkdir -p results/baseline

@@ -163,7 +163,29 @@ for l in lines:
 open(sys.argv[2], "w").writelines(out)
 EOF
 check "regress fails on a 3x slower configuration" \
-    '! $PY scripts/regress.py $T/run.csv $T/doc3.csv > $T/r4.txt && grep -q "time ratio" $T/r4.txt'
+    '! $PY scripts/regress.py $T/run.csv $T/doc3.csv --min-time 0.005 > $T/r4.txt && grep -q "REGRESSION: time x" $T/r4.txt'
+check "a 3x slower configuration still fails after re-measuring (--confirm)" \
+    '! $PY scripts/regress.py $T/run.csv $T/doc3.csv --min-time 0.005 --confirm $BENCH --confirm-rounds 1 > $T/r5.txt && grep -q "re-measured" $T/r5.txt'
+# doctored run: one configuration 3x slower in the sweep only (a burst of
+# load); re-measuring must clear it, and without --confirm it must not
+$PY - "$T/run.csv" "$T/slow_run.csv" <<'EOF'
+import sys
+lines = open(sys.argv[1]).read().splitlines(True)
+hdr = [l for l in lines if not l.startswith("#")][0].rstrip("\n").split(",")
+i = hdr.index("wall_s")
+out = []
+for l in lines:
+    if not l.startswith("#") and l.startswith("naive,comb,3000,"):
+        f = l.split(",")
+        f[i] = repr(float(f[i]) * 3)
+        l = ",".join(f)
+    out.append(l)
+open(sys.argv[2], "w").writelines(out)
+EOF
+check "a burst of load in the sweep fails without --confirm" \
+    '! $PY scripts/regress.py $T/slow_run.csv $T/base.csv --min-time 0.005 > $T/r6.txt && grep -q "REGRESSION: time x" $T/r6.txt'
+check "... and passes once re-measured (--confirm)" \
+    '$PY scripts/regress.py $T/slow_run.csv $T/base.csv --min-time 0.005 --confirm $BENCH --confirm-rounds 2 > $T/r7.txt && grep -q "re-measured" $T/r7.txt'
 
 # ---- usage errors
 check "unknown variant is a usage error (64)" \
