@@ -18,12 +18,14 @@
 
 static const char usage_text[] =
     "usage: wskel [options] INPUT\n"
-    "Compute the positively weighted straight skeleton of a simple polygon.\n"
+    "Compute the positively weighted straight skeleton of a simple polygon or a\n"
+    "polygon with holes.\n"
     "\n"
     "INPUT is a .wpoly file or GraphML (detected by content); '-' reads stdin.\n"
     "  .wpoly: '#' comment lines; first line n; then n lines 'x y [w]' where w\n"
-    "  (default 1) weights the edge from this vertex to the next.  Clockwise\n"
-    "  input is accepted and reversed internally; output keeps input numbering.\n"
+    "  (default 1) weights the edge from this vertex to the next.  Holes follow\n"
+    "  as further rings, each its own count line and vertex lines.  Any ring may\n"
+    "  be clockwise; output keeps input numbering (over the rings in file order).\n"
     "\n"
     "options:\n"
     "  --variant V        algorithm (default naive); --list-variants shows all\n"

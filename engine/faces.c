@@ -93,7 +93,7 @@ wk_status wk_faces_check_ids(wk_run *R, const wk_polygon *P, const wk_skeleton *
 ** cycle into cyc, which has room for k + 1 nodes. */
 static wk_status walk_face(wk_run *R, const wk_polygon *P, uint32_t e, half *h, uint32_t k,
                            uint32_t *cyc, uint32_t *len, const char *what) {
-    uint32_t first = e + 1 == P->n ? 0 : e + 1;
+    uint32_t first = wk_polygon_next(P, e);
     if (k > 1) qsort(h, k, sizeof *h, half_cmp);
     for (uint32_t i = 1; i < k; i++)
         if (h[i].from == h[i - 1].from)
@@ -250,9 +250,8 @@ bool wk_arc_is_reflex(const wk_polygon *P, const wk_skeleton *S, uint32_t i) {
     double ta = S->nodes[c->a].t, tb = S->nodes[c->b].t;
     if (!(ta != tb)) return false; /* constant time, or NaN */
     uint32_t before = ta < tb ? c->left : c->right, after = ta < tb ? c->right : c->left;
-    uint32_t n = P->n;
-    wk_point p0 = P->p[before], p1 = P->p[before + 1 == n ? 0 : before + 1];
-    wk_point q0 = P->p[after], q1 = P->p[after + 1 == n ? 0 : after + 1];
+    wk_point p0 = P->p[before], p1 = P->p[wk_polygon_next(P, before)];
+    wk_point q0 = P->p[after], q1 = P->p[wk_polygon_next(P, after)];
     double cross = (p1.x - p0.x) * (q1.y - q0.y) - (p1.y - p0.y) * (q1.x - q0.x);
     return cross < 0;
 }

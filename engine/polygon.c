@@ -1,30 +1,37 @@
 /*
-** polygon.c: the input polygon: construction from arrays, validation,
-** counter-clockwise orientation, and the small queries on it.
+** polygon.c: the input polygon (with holes): construction from arrays,
+** validation, orientation, and the small queries on it.
 **
-** Invariants of a wk_polygon handed out by wk_polygon_from_arrays:
-**   - 3 <= n <= WK_POLYGON_MAX_N; coordinates finite with magnitude at most
+** Invariants of a wk_polygon handed out by wk_polygon_from_rings (and
+** wk_polygon_from_arrays, its one-ring case):
+**   - 3 <= n <= WK_POLYGON_MAX_N over 1 <= n_rings <= WK_POLYGON_MAX_RINGS
+**     rings of >= 3 vertices each; coordinates finite with magnitude at most
 **     WK_POLYGON_MAX_COORD; weights finite and > 0;
-**   - the boundary is simple: consecutive vertices differ, no other two
+**   - each ring is simple: consecutive vertices differ, no other two
 **     vertices coincide, no edge meets a non-adjacent edge, adjacent edges
 **     meet only at their shared vertex (straight-on 180-degree vertices are
-**     allowed, 0-degree spikes are not), and the vertices are not all on one
-**     line; so the area is positive;
-**   - p[] is counter-clockwise.  If the input was clockwise, reversed is true
-**     and stored vertex j is input vertex n-1-j; stored edge j
-**     (p[j] -> p[j+1]) is then input edge (n-2-j) mod n, and w[j] is that
-**     input edge's weight, so every weight stays on its geometric edge;
+**     allowed, 0-degree spikes are not), and its vertices are not all on one
+**     line; no two rings share a point; every hole lies inside ring 0 and in
+**     no other hole; so the area (outer minus holes) is positive;
+**   - ring 0 is stored counter-clockwise, holes clockwise.  A ring given the
+**     other way is reversed in place (its index range stays): stored local
+**     vertex j is input local m-1-j, stored local edge j is input local edge
+**     (m-2-j) mod m, and w[] moves with it, so every weight stays on its
+**     geometric edge; reversed says whether ring 0 was;
 **   - input_index[j] is the input number of stored vertex j;
 **   - r is the number of reflex vertices (strict right turns, exactly).
 **
 ** Validation runs on the input order, so every message uses input numbering
-** (vertex i, edge i = input vertex i -> i+1, counted from 0) and the input
-** line of the culprit when the caller passed lines[].
+** (vertex i, edge i = input vertex i -> the next of its ring, counted from 0
+** over all rings in file order) and the input line of the culprit when the
+** caller passed lines[].
 **
-** The simplicity test is a Shamos-Hoey sweep, O(n log n), deciding every
-** comparison with the exact predicates (see sweep_* below for why it is
-** complete on degenerate inputs).  It is not Bentley-Ottmann: it stops at
-** the first intersection it finds, which need not be the leftmost.
+** The simplicity test is a Shamos-Hoey sweep over all edges of all rings at
+** once, O(n log n), deciding every comparison with the exact predicates (see
+** sweep_* below for why it is complete on degenerate inputs).  It is not
+** Bentley-Ottmann: it stops at the first intersection it finds, which need
+** not be the leftmost.  The same sweep finds which ring encloses which
+** (sweep_nest), so the nesting costs one treap search per ring.
 */
 #include "kinetics.h"
 #include "wskel.h"
@@ -52,8 +59,10 @@ static const char *describe(char *buf, size_t size, const char *what, const long
 
 static bool same_point(wk_point p, wk_point q) { return p.x == q.x && p.y == q.y; }
 
-static uint32_t next_of(uint32_t i, uint32_t n) { return i + 1 == n ? 0 : i + 1; }
-static uint32_t prev_of(uint32_t i, uint32_t n) { return i == 0 ? n - 1 : i - 1; }
+static uint32_t ring_end(const wk_polygon *P, uint32_t k) { return P->ring_start[k + 1]; }
+static uint32_t ring_size(const wk_polygon *P, uint32_t k) {
+    return P->ring_start[k + 1] - P->ring_start[k];
+}
 
 /* ---- sorting: bottom-up merge sort of vertex ids by (x, y, id) ----
 ** Our own because qsort has no context argument in C11 and sorting
@@ -116,6 +125,7 @@ static uint32_t *sort_vertices(const wk_point *p, uint32_t *a, uint32_t *tmp, ui
 
 typedef struct sweep {
     wk_run *R; /* counts the exact stages of the comparisons */
+    const wk_polygon *P; /* for the rings (next/prev) */
     const wk_point *p;
     uint32_t n;
     uint32_t root;
@@ -124,6 +134,13 @@ typedef struct sweep {
     ** touch the vertex lying on the other edge (WK_NONE if not known) */
     uint32_t bad_a, bad_b, bad_vertex;
     wk_seg_meet bad_kind;
+    /* nesting (polygons with holes): ccw[k] is ring k's orientation (+1 or
+    ** -1, as given); parent[k] the ring whose inside immediately encloses
+    ** ring k, WK_NONE if none; seen[k] set once ring k's first (leftmost)
+    ** vertex was swept.  NULL for a single ring. */
+    const int8_t *ccw;
+    uint32_t *parent;
+    uint8_t *seen;
 } sweep;
 
 static uint64_t edge_priority(uint32_t e) {
@@ -135,16 +152,16 @@ static uint64_t edge_priority(uint32_t e) {
 
 /* Vertex id of the left (lexicographically smaller) endpoint of edge e. */
 static uint32_t left_vertex(const sweep *S, uint32_t e) {
-    uint32_t f = next_of(e, S->n);
+    uint32_t f = wk_polygon_next(S->P, e);
     return wk_point_lex_cmp(S->p[e], S->p[f]) < 0 ? e : f;
 }
 static uint32_t right_vertex(const sweep *S, uint32_t e) {
-    uint32_t f = next_of(e, S->n);
+    uint32_t f = wk_polygon_next(S->P, e);
     return wk_point_lex_cmp(S->p[e], S->p[f]) < 0 ? f : e;
 }
 
-static bool adjacent_edges(uint32_t a, uint32_t b, uint32_t n) {
-    return next_of(a, n) == b || next_of(b, n) == a;
+static bool adjacent_edges(const wk_polygon *P, uint32_t a, uint32_t b) {
+    return wk_polygon_next(P, a) == b || wk_polygon_next(P, b) == a;
 }
 
 static void rotate_up(sweep *S, uint32_t x) {
@@ -198,11 +215,10 @@ static void record(sweep *S, uint32_t a, uint32_t b, wk_seg_meet kind, uint32_t 
 /* Test edges a and b (either may be WK_NONE); returns false after recording
 ** an intersection. */
 static bool test_pair(sweep *S, uint32_t a, uint32_t b) {
-    if (a == WK_NONE || b == WK_NONE || adjacent_edges(a, b, S->n)) return true;
+    if (a == WK_NONE || b == WK_NONE || adjacent_edges(S->P, a, b)) return true;
     const wk_point *p = S->p;
-    uint32_t n = S->n;
-    wk_seg_meet m =
-        wk_segments_meet_counted(S->R, p[a], p[next_of(a, n)], p[b], p[next_of(b, n)]);
+    wk_seg_meet m = wk_segments_meet_counted(S->R, p[a], p[wk_polygon_next(S->P, a)], p[b],
+                                             p[wk_polygon_next(S->P, b)]);
     if (m == WK_SEG_DISJOINT) return true;
     record(S, a, b, m, WK_NONE);
     return false;
@@ -275,13 +291,48 @@ static bool sweep_remove(sweep *S, uint32_t x) {
     return test_pair(S, below, above);
 }
 
+/* Nesting.  At the first (lexicographically smallest) vertex v of ring k,
+** no edge of ring k is in the status yet, and the status edge e directly
+** below v (if any) has nothing between it and v: v lies in the region just
+** above e.  If that region is inside e's ring j (j's interior is left of
+** its edges when j runs counter-clockwise, and "above" is left of e's
+** left-to-right direction), j encloses ring k; otherwise the region is the
+** one just outside j, which parent(j) encloses (j started before v, so
+** parent(j) is known).  No edge below: nothing encloses ring k.  Only
+** meaningful if the sweep finds no intersection (a touch at v is recorded
+** here). */
+static bool sweep_nest(sweep *S, uint32_t v) {
+    uint32_t k = wk_polygon_ring(S->P, v), cur = S->root, below = WK_NONE;
+    S->seen[k] = 1;
+    while (cur != WK_NONE) {
+        int o = wk_orient2d_counted(S->R, S->p[left_vertex(S, cur)], S->p[right_vertex(S, cur)],
+                                    S->p[v]);
+        if (o == 0) {
+            record(S, v, cur, WK_SEG_TOUCH, v); /* v lies on edge cur */
+            return false;
+        }
+        if (o > 0) below = cur;
+        cur = o > 0 ? S->rgt[cur] : S->lft[cur];
+    }
+    if (below == WK_NONE) {
+        S->parent[k] = WK_NONE;
+        return true;
+    }
+    uint32_t j = wk_polygon_ring(S->P, below);
+    bool left_to_right = left_vertex(S, below) == below;
+    bool above_inside = left_to_right == (S->ccw[j] > 0);
+    S->parent[k] = above_inside ? j : S->parent[j];
+    return true;
+}
+
 /* Runs the sweep over the vertices in lexicographic order; false after
 ** recording an intersection. */
 static bool sweep_run(sweep *S, const uint32_t *order) {
     uint32_t n = S->n;
     for (uint32_t k = 0; k < n; k++) {
         uint32_t v = order[k];
-        uint32_t in = prev_of(v, n), out = v; /* the edges at v */
+        if (S->seen && !S->seen[wk_polygon_ring(S->P, v)] && !sweep_nest(S, v)) return false;
+        uint32_t in = wk_polygon_prev(S->P, v), out = v; /* the edges at v */
         bool in_ends = right_vertex(S, in) == v, out_ends = right_vertex(S, out) == v;
         if (in_ends && !sweep_remove(S, in)) return false;
         if (out_ends && !sweep_remove(S, out)) return false;
@@ -293,14 +344,15 @@ static bool sweep_run(sweep *S, const uint32_t *order) {
 
 /* For a TOUCH between non-adjacent edges a and b: a vertex of one lying on
 ** the other (there is one, as vertices are distinct). */
-static void touch_vertex(wk_run *R, const wk_point *p, uint32_t n, uint32_t a, uint32_t b,
+static void touch_vertex(wk_run *R, const wk_polygon *P, uint32_t a, uint32_t b,
                          uint32_t *vertex, uint32_t *on_edge) {
-    uint32_t ends[2][2] = {{a, next_of(a, n)}, {b, next_of(b, n)}};
+    const wk_point *p = P->p;
+    uint32_t ends[2][2] = {{a, wk_polygon_next(P, a)}, {b, wk_polygon_next(P, b)}};
     uint32_t edges[2] = {a, b};
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++) {
             uint32_t v = ends[i][j], e = edges[1 - i];
-            if (wk_segments_meet_counted(R, p[v], p[v], p[e], p[next_of(e, n)]) !=
+            if (wk_segments_meet_counted(R, p[v], p[v], p[e], p[wk_polygon_next(P, e)]) !=
                 WK_SEG_DISJOINT) {
                 *vertex = v;
                 *on_edge = e;
@@ -317,16 +369,17 @@ static wk_status report_intersection(wk_run *R, const sweep *S, const char *name
     uint32_t a = S->bad_a, b = S->bad_b;
     if (S->bad_kind == WK_SEG_TOUCH) {
         uint32_t v = S->bad_vertex, e = b;
-        if (v == WK_NONE) touch_vertex(R, S->p, S->n, a, b, &v, &e);
+        const wk_polygon *P = S->P;
+        if (v == WK_NONE) touch_vertex(R, P, a, b, &v, &e);
         if (v != WK_NONE) {
             /* If an edge at v runs along e, say so: "overlaps" tells more
             ** than "touches". */
-            uint32_t n = S->n, at_v[2] = {prev_of(v, n), v};
+            uint32_t at_v[2] = {wk_polygon_prev(P, v), v};
             for (int i = 0; i < 2; i++) {
                 uint32_t f = at_v[i];
-                if (!adjacent_edges(f, e, n) &&
-                    wk_segments_meet_counted(R, S->p[f], S->p[next_of(f, n)], S->p[e],
-                                             S->p[next_of(e, n)]) == WK_SEG_OVERLAP) {
+                if (!adjacent_edges(P, f, e) &&
+                    wk_segments_meet_counted(R, S->p[f], S->p[wk_polygon_next(P, f)], S->p[e],
+                                             S->p[wk_polygon_next(P, e)]) == WK_SEG_OVERLAP) {
                     a = f < e ? f : e;
                     b = f < e ? e : f;
                     return WK_FAIL(R, WK_EINPUT, name, line_of(lines, a),
@@ -337,7 +390,7 @@ static wk_status report_intersection(wk_run *R, const sweep *S, const char *name
             }
             /* Else name the edge at v that is not adjacent to e (at least
             ** one is not, once spikes are excluded). */
-            uint32_t f = adjacent_edges(v, e, n) ? prev_of(v, n) : v;
+            uint32_t f = adjacent_edges(P, v, e) ? wk_polygon_prev(P, v) : v;
             return WK_FAIL(R, WK_EINPUT, name, line_of(lines, v), "%s touches %s: %s lies on it",
                            describe(da, sizeof da, "edge", lines, f),
                            describe(db, sizeof db, "edge", lines, e),
@@ -385,29 +438,45 @@ static wk_status check_values(wk_run *R, const wk_point *p, const double *w, uin
     return WK_OK;
 }
 
-/* The local checks, O(n), no memory: repeated vertices, all on one line,
-** 0-degree spikes. */
-static wk_status check_local(wk_run *R, const wk_point *p, uint32_t n, const char *name,
-                             const long *lines) {
-    char da[96], db[96];
-    for (uint32_t i = 0; i < n; i++) {
-        uint32_t j = next_of(i, n);
+/* " of ring k" for polygons with holes, "" otherwise (messages). */
+static const char *ring_note(char *buf, size_t size, const wk_polygon *P, uint32_t k) {
+    if (P->n_rings == 1) buf[0] = 0;
+    else snprintf(buf, size, " of ring %u%s", k, k == 0 ? " (the outer boundary)" : " (a hole)");
+    return buf;
+}
+
+/* The local checks of one ring, O(ring), no memory: repeated vertices, all
+** on one line, 0-degree spikes. */
+static wk_status check_local(wk_run *R, const wk_polygon *P, uint32_t ring, const long *lines) {
+    char da[96], db[96], dr[64];
+    const wk_point *p = P->p;
+    const char *name = P->name;
+    uint32_t s = P->ring_start[ring], m = ring_size(P, ring);
+    for (uint32_t i = s; i < s + m; i++) {
+        uint32_t j = wk_polygon_next(P, i);
         if (!same_point(p[i], p[j])) continue;
-        if (j == 0)
+        if (j == s && P->n_rings == 1)
             return WK_FAIL(R, WK_EINPUT, name, line_of(lines, i),
                            "the last vertex (%u) repeats the first: the polygon closes "
                            "implicitly, do not repeat vertex 0 (zero-length edge %u)",
                            i, i);
+        if (j == s)
+            return WK_FAIL(R, WK_EINPUT, name, line_of(lines, i),
+                           "the last vertex (%u)%s repeats its first (%u): a ring closes "
+                           "implicitly, do not repeat its first vertex (zero-length edge %u)",
+                           i, ring_note(dr, sizeof dr, P, ring), s, i);
         return WK_FAIL(R, WK_EINPUT, name, line_of(lines, j),
                        "vertex %u repeats vertex %u (zero-length edge %u)", j, i, i);
     }
-    uint32_t k = 2;
-    while (k < n && wk_orient2d_counted(R, p[0], p[1], p[k]) == 0) k++;
-    if (k == n)
-        return WK_FAIL(R, WK_EINPUT, name, line_of(lines, 0),
-                       "polygon has zero area (all %u vertices are collinear)", n);
-    for (uint32_t v = 0; v < n; v++) {
-        uint32_t u = prev_of(v, n), w = next_of(v, n);
+    uint32_t k = s + 2;
+    while (k < s + m && wk_orient2d_counted(R, p[s], p[s + 1], p[k]) == 0) k++;
+    if (k == s + m)
+        return WK_FAIL(R, WK_EINPUT, name, line_of(lines, s),
+                       "%s has zero area (all %u vertices are collinear)",
+                       P->n_rings == 1 ? "polygon" : ring == 0 ? "the outer ring" : "a hole",
+                       m);
+    for (uint32_t v = s; v < s + m; v++) {
+        uint32_t u = wk_polygon_prev(P, v), w = wk_polygon_next(P, v);
         if (wk_orient2d_counted(R, p[u], p[v], p[w]) != 0) continue;
         /* Collinear: straight on (valid) if u and w lie on opposite sides of
         ** v, a spike if on the same side.  Exact: only comparisons. */
@@ -420,14 +489,53 @@ static wk_status check_local(wk_run *R, const wk_point *p, uint32_t n, const cha
     return WK_OK;
 }
 
-/* Coinciding vertices, then the sweep.  Needs 5n words of scratch. */
-static wk_status check_simple(wk_run *R, const wk_point *p, uint32_t n, const char *name,
+/* Orientation of a simple ring, exactly: +1 counter-clockwise, -1
+** clockwise.  The lexicographically smallest vertex is convex (both
+** neighbours lie on one side of it; collinear would be a spike), so the turn
+** there is the ring's. */
+static int ring_orientation(wk_run *R, const wk_polygon *P, uint32_t ring) {
+    uint32_t s = P->ring_start[ring], m = s;
+    for (uint32_t i = s + 1; i < ring_end(P, ring); i++)
+        if (wk_point_lex_cmp(P->p[i], P->p[m]) < 0) m = i;
+    return wk_orient2d_counted(R, P->p[wk_polygon_prev(P, m)], P->p[m], P->p[wk_polygon_next(P, m)]);
+}
+
+/* The rings' nesting as the sweep found it (sweep_nest): ring 0 must be
+** enclosed by nothing, every hole by ring 0 exactly. */
+static wk_status check_nesting(wk_run *R, const wk_polygon *P, const uint32_t *parent,
+                               const long *lines) {
+    if (parent[0] != WK_NONE)
+        return WK_FAIL(R, WK_EINPUT, P->name, line_of(lines, 0),
+                       "the outer ring (ring 0, the first) lies inside ring %u: the outer "
+                       "boundary must come first and contain every hole", parent[0]);
+    for (uint32_t k = 1; k < P->n_rings; k++) {
+        long line = line_of(lines, P->ring_start[k]);
+        if (parent[k] == WK_NONE)
+            return WK_FAIL(R, WK_EINPUT, P->name, line,
+                           "hole %u (ring %u, vertices %u..%u) is not inside the outer ring", k, k,
+                           P->ring_start[k], ring_end(P, k) - 1);
+        if (parent[k] != 0)
+            return WK_FAIL(R, WK_EINPUT, P->name, line,
+                           "hole %u (ring %u) lies inside hole %u: a hole inside a hole is a "
+                           "separate polygon (compute it on its own)", k, k, parent[k]);
+    }
+    return WK_OK;
+}
+
+/* Coinciding vertices, then the sweep (intersections, and the nesting of
+** the rings when there are holes).  ccw[k]: ring k's orientation as it
+** stands (NULL for one ring).  Needs 5n words of scratch. */
+static wk_status check_simple(wk_run *R, const wk_polygon *P, const int8_t *ccw,
                               const long *lines) {
     wk_status st = WK_OK;
     char da[96], db[96];
+    const wk_point *p = P->p;
+    uint32_t n = P->n, h = P->n_rings;
+    const char *name = P->name;
     uint32_t *buf = WK_NEW_ARRAY(R, uint32_t, n);
     uint32_t *tmp = WK_NEW_ARRAY(R, uint32_t, n);
-    sweep S = {R, p, n, WK_NONE, NULL, NULL, NULL, WK_NONE, WK_NONE, WK_NONE, WK_SEG_DISJOINT};
+    sweep S = {R, P, p, n, WK_NONE, NULL, NULL, NULL, WK_NONE, WK_NONE, WK_NONE,
+               WK_SEG_DISJOINT, NULL, NULL, NULL};
     if (!buf || !tmp) goto oom;
     for (uint32_t i = 0; i < n; i++) buf[i] = i;
     const uint32_t *order = sort_vertices(p, buf, tmp, n);
@@ -448,11 +556,20 @@ static wk_status check_simple(wk_run *R, const wk_point *p, uint32_t n, const ch
     S.rgt = WK_NEW_ARRAY(R, uint32_t, n);
     S.par = WK_NEW_ARRAY(R, uint32_t, n);
     if (!S.lft || !S.rgt || !S.par) goto oom;
+    if (h > 1) {
+        S.ccw = ccw;
+        S.parent = WK_NEW_ARRAY(R, uint32_t, h);
+        S.seen = WK_NEW_ARRAY(R, uint8_t, h);
+        if (!S.parent || !S.seen) goto oom;
+    }
     if (!sweep_run(&S, order)) st = report_intersection(R, &S, name, lines);
+    else if (h > 1) st = check_nesting(R, P, S.parent, lines);
     goto done;
 oom:
     st = WK_ENOMEM;
 done:
+    if (S.parent) WK_FREE_ARRAY(R, S.parent, h);
+    if (S.seen) WK_FREE_ARRAY(R, S.seen, h);
     WK_FREE_ARRAY(R, S.lft, n);
     WK_FREE_ARRAY(R, S.rgt, n);
     WK_FREE_ARRAY(R, S.par, n);
@@ -461,20 +578,9 @@ done:
     return st;
 }
 
-/* Orientation of a simple polygon, exactly: +1 counter-clockwise, -1
-** clockwise.  The lexicographically smallest vertex is convex (both
-** neighbours lie on one side of it; collinear would be a spike), so the turn
-** there is the polygon's. */
-static int orientation(wk_run *R, const wk_point *p, uint32_t n) {
-    uint32_t m = 0;
-    for (uint32_t i = 1; i < n; i++)
-        if (wk_point_lex_cmp(p[i], p[m]) < 0) m = i;
-    return wk_orient2d_counted(R, p[prev_of(m, n)], p[m], p[next_of(m, n)]);
-}
-
 bool wk_polygon_is_reflex_counted(wk_run *R, const wk_polygon *P, uint32_t i) {
-    uint32_t n = P->n;
-    return wk_orient2d_counted(R, P->p[prev_of(i, n)], P->p[i], P->p[next_of(i, n)]) < 0;
+    return wk_orient2d_counted(R, P->p[wk_polygon_prev(P, i)], P->p[i],
+                               P->p[wk_polygon_next(P, i)]) < 0;
 }
 
 /* The input domain's angle bound: a vertex whose two edges are antiparallel
@@ -488,7 +594,7 @@ static wk_status check_needles(wk_run *R, const wk_polygon *P, const long *lines
     uint32_t n = P->n;
     wk_point o = wk_polygon_centre(P);
     for (uint32_t i = 0; i < n; i++) {
-        uint32_t h = prev_of(i, n);
+        uint32_t h = wk_polygon_prev(P, i);
         wk_offset_line a, b;
         wk_offset_line_of_edge_at(P, h, o, &a);
         wk_offset_line_of_edge_at(P, i, o, &b);
@@ -506,56 +612,98 @@ static wk_status check_needles(wk_run *R, const wk_polygon *P, const long *lines
 
 /* ---- construction ---- */
 
-wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const double *y,
-                                 const double *w, const char *name, const long *lines,
-                                 wk_polygon **out) {
+/* Reverse ring k in place: stored local vertex j := input local m-1-j.
+** Stored local edge j then runs input local m-1-j -> m-2-j, i.e. it is
+** input local edge m-2-j (j < m-1) or m-1 (input local 0 -> m-1): weights
+** w[0..m-2] reverse among themselves, w[m-1] stays. */
+static void reverse_ring(wk_polygon *P, uint32_t k) {
+    uint32_t s = P->ring_start[k], m = ring_size(P, k);
+    for (uint32_t i = s, j = s + m - 1; i < j; i++, j--) {
+        wk_point tp = P->p[i];
+        P->p[i] = P->p[j];
+        P->p[j] = tp;
+        uint32_t ti = P->input_index[i];
+        P->input_index[i] = P->input_index[j];
+        P->input_index[j] = ti;
+    }
+    for (uint32_t i = s, j = s + m - 2; i < j; i++, j--) {
+        double tw = P->w[i];
+        P->w[i] = P->w[j];
+        P->w[j] = tw;
+    }
+}
+
+static wk_status check_rings(wk_run *R, const wk_polygon *P, int8_t *ccw, const long *lines) {
+    wk_status st;
+    for (uint32_t k = 0; k < P->n_rings; k++)
+        if ((st = check_local(R, P, k, lines)) != WK_OK) return st;
+    for (uint32_t k = 0; k < P->n_rings; k++) ccw[k] = (int8_t)ring_orientation(R, P, k);
+    return check_simple(R, P, P->n_rings > 1 ? ccw : NULL, lines);
+}
+
+wk_status wk_polygon_from_rings(wk_run *R, uint32_t n_rings, const uint32_t *ring_size_in,
+                                const double *x, const double *y, const double *w,
+                                const char *name, const long *lines, wk_polygon **out) {
     *out = NULL;
     if (!name) name = "";
-    if (n < 3)
-        return WK_FAIL(R, WK_EINPUT, name, 0, "polygon needs at least 3 vertices (got %u)", n);
-    if (n > WK_POLYGON_MAX_N)
-        return WK_FAIL(R, WK_EINPUT, name, 0, "too many vertices (%u; the limit is %u)", n,
-                       WK_POLYGON_MAX_N);
+    if (n_rings < 1)
+        return WK_FAIL(R, WK_EINPUT, name, 0, "a polygon needs at least one ring");
+    if (n_rings > WK_POLYGON_MAX_RINGS)
+        return WK_FAIL(R, WK_EINPUT, name, 0, "too many rings (%u; the limit is %u)", n_rings,
+                       WK_POLYGON_MAX_RINGS);
+    uint64_t total = 0;
+    for (uint32_t k = 0; k < n_rings; k++) {
+        if (ring_size_in[k] < 3) {
+            long line = lines && total < WK_POLYGON_MAX_N ? lines[total] : 0;
+            if (n_rings == 1)
+                return WK_FAIL(R, WK_EINPUT, name, line,
+                               "polygon needs at least 3 vertices (got %u)", ring_size_in[k]);
+            return WK_FAIL(R, WK_EINPUT, name, line,
+                           "ring %u needs at least 3 vertices (got %u)", k, ring_size_in[k]);
+        }
+        total += ring_size_in[k];
+    }
+    if (total > WK_POLYGON_MAX_N)
+        return WK_FAIL(R, WK_EINPUT, name, 0, "too many vertices (%llu; the limit is %u)",
+                       (unsigned long long)total, WK_POLYGON_MAX_N);
+    uint32_t n = (uint32_t)total;
     wk_status st;
+    int8_t *ccw = NULL;
     wk_polygon *P = WK_NEW_ARRAY(R, wk_polygon, 1);
     if (!P) return WK_ENOMEM;
     P->n = n;
+    P->n_rings = n_rings;
     snprintf(P->name, sizeof P->name, "%s", name);
     P->p = WK_NEW_ARRAY(R, wk_point, n);
     P->w = WK_NEW_ARRAY(R, double, n);
     P->input_index = WK_NEW_ARRAY(R, uint32_t, n);
-    if (!P->p || !P->w || !P->input_index) {
+    P->ring_start = WK_NEW_ARRAY(R, uint32_t, (size_t)n_rings + 1);
+    if (n_rings > 1) P->ring_of = WK_NEW_ARRAY(R, uint32_t, n);
+    ccw = WK_NEW_ARRAY(R, int8_t, n_rings);
+    if (!P->p || !P->w || !P->input_index || !P->ring_start || (n_rings > 1 && !P->ring_of) ||
+        !ccw) {
         st = WK_ENOMEM;
         goto fail;
     }
+    P->ring_start[0] = 0;
+    for (uint32_t k = 0; k < n_rings; k++) P->ring_start[k + 1] = P->ring_start[k] + ring_size_in[k];
+    for (uint32_t k = 0; n_rings > 1 && k < n_rings; k++)
+        for (uint32_t i = P->ring_start[k]; i < P->ring_start[k + 1]; i++) P->ring_of[i] = k;
     for (uint32_t i = 0; i < n; i++) {
         P->p[i] = (wk_point){x[i], y[i]};
         P->w[i] = w ? w[i] : 1.0;
         P->input_index[i] = i;
     }
     if ((st = check_values(R, P->p, P->w, n, name, lines)) != WK_OK ||
-        (st = check_local(R, P->p, n, name, lines)) != WK_OK ||
-        (st = check_simple(R, P->p, n, name, lines)) != WK_OK)
+        (st = check_rings(R, P, ccw, lines)) != WK_OK)
         goto fail;
-
-    if (orientation(R, P->p, n) < 0) {
-        /* Reverse: stored vertex j := input vertex n-1-j.  Stored edge j then
-        ** runs input n-1-j -> n-2-j, i.e. it is input edge (n-2-j) mod n:
-        ** weights w[0..n-2] reverse among themselves, w[n-1] stays. */
-        for (uint32_t i = 0, j = n - 1; i < j; i++, j--) {
-            wk_point tp = P->p[i];
-            P->p[i] = P->p[j];
-            P->p[j] = tp;
+    /* Stored orientation: the outer ring counter-clockwise, holes clockwise. */
+    for (uint32_t k = 0; k < n_rings; k++)
+        if (ccw[k] != (k == 0 ? 1 : -1)) {
+            reverse_ring(P, k);
+            if (k == 0) P->reversed = true;
         }
-        for (uint32_t i = 0, j = n - 2; i < j; i++, j--) {
-            double tw = P->w[i];
-            P->w[i] = P->w[j];
-            P->w[j] = tw;
-        }
-        for (uint32_t i = 0; i < n; i++) P->input_index[i] = n - 1 - i;
-        P->reversed = true;
-    }
-    /* Defensive: a simple polygon has positive exact area, so the rounded
+    /* Defensive: a valid polygon has positive exact area, so the rounded
     ** area is positive too unless the products underflow (coordinates
     ** around 1e-160 and below), which the predicates do not support. */
     double area = wk_polygon_area(P);
@@ -567,32 +715,59 @@ wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const d
     if ((st = check_needles(R, P, lines)) != WK_OK) goto fail;
     P->r = 0;
     for (uint32_t i = 0; i < n; i++) P->r += wk_polygon_is_reflex_counted(R, P, i);
+    WK_FREE_ARRAY(R, ccw, n_rings);
     *out = P;
     return WK_OK;
 fail:
+    if (ccw) WK_FREE_ARRAY(R, ccw, n_rings);
     wk_polygon_free(R, P);
     return st;
 }
 
+wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const double *y,
+                                 const double *w, const char *name, const long *lines,
+                                 wk_polygon **out) {
+    return wk_polygon_from_rings(R, 1, &n, x, y, w, name, lines, out);
+}
+
 wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P) {
     const char *name = P->name;
-    uint32_t n = P->n;
+    uint32_t n = P->n, h = P->n_rings;
     if (n < 3 || n > WK_POLYGON_MAX_N)
         return WK_FAIL(R, WK_EINPUT, name, 0, "vertex count %u out of range [3, %u]", n,
                        WK_POLYGON_MAX_N);
+    if (h < 1 || h > WK_POLYGON_MAX_RINGS || !P->ring_start || P->ring_start[0] != 0 ||
+        P->ring_start[h] != n || (h > 1) != (P->ring_of != NULL))
+        return WK_FAIL(R, WK_EINPUT, name, 0, "ring table out of range (%u rings)", h);
+    for (uint32_t k = 0; k < h; k++) {
+        if (ring_size(P, k) < 3 || ring_size(P, k) > n)
+            return WK_FAIL(R, WK_EINPUT, name, 0, "ring %u has %u vertices", k, ring_size(P, k));
+        for (uint32_t i = P->ring_start[k]; h > 1 && i < ring_end(P, k); i++)
+            if (P->ring_of[i] != k)
+                return WK_FAIL(R, WK_EINPUT, name, 0, "vertex %u's ring is %u, not %u", i,
+                               P->ring_of[i], k);
+    }
     wk_status st;
+    int8_t *ccw = WK_NEW_ARRAY(R, int8_t, h);
+    if (!ccw) return WK_ENOMEM;
     if ((st = check_values(R, P->p, P->w, n, name, NULL)) != WK_OK ||
-        (st = check_local(R, P->p, n, name, NULL)) != WK_OK ||
-        (st = check_simple(R, P->p, n, name, NULL)) != WK_OK)
-        return st;
-    if (orientation(R, P->p, n) < 0)
-        return WK_FAIL(R, WK_EINPUT, name, 0, "polygon is stored clockwise");
-    if ((st = check_needles(R, P, NULL)) != WK_OK) return st;
+        (st = check_rings(R, P, ccw, NULL)) != WK_OK)
+        goto done;
+    for (uint32_t k = 0; k < h; k++)
+        if (ccw[k] != (k == 0 ? 1 : -1)) {
+            st = WK_FAIL(R, WK_EINPUT, name, 0,
+                         k == 0 ? "polygon is stored clockwise"
+                                : "hole %u is stored counter-clockwise (holes are stored clockwise)",
+                         k);
+            goto done;
+        }
+    if ((st = check_needles(R, P, NULL)) != WK_OK) goto done;
     uint32_t r = 0;
     for (uint32_t i = 0; i < n; i++) r += wk_polygon_is_reflex_counted(R, P, i);
-    if (r != P->r)
-        return WK_FAIL(R, WK_EINPUT, name, 0, "reflex count is %u, stored %u", r, P->r);
-    return WK_OK;
+    if (r != P->r) st = WK_FAIL(R, WK_EINPUT, name, 0, "reflex count is %u, stored %u", r, P->r);
+done:
+    WK_FREE_ARRAY(R, ccw, h);
+    return st;
 }
 
 void wk_polygon_free(wk_run *R, wk_polygon *P) {
@@ -600,23 +775,27 @@ void wk_polygon_free(wk_run *R, wk_polygon *P) {
     WK_FREE_ARRAY(R, P->p, P->n);
     WK_FREE_ARRAY(R, P->w, P->n);
     WK_FREE_ARRAY(R, P->input_index, P->n);
+    if (P->ring_start) WK_FREE_ARRAY(R, P->ring_start, (size_t)P->n_rings + 1);
+    if (P->ring_of) WK_FREE_ARRAY(R, P->ring_of, P->n);
     WK_FREE_ARRAY(R, P, 1);
 }
 
 /* ---- queries ---- */
 
 double wk_polygon_area(const wk_polygon *P) {
-    /* Exact, then rounded: a plain shoelace sum can come out zero or even
-    ** negative for a valid but thin polygon, breaking "positive for
-    ** counter-clockwise". */
-    return 0.5 * wk_shoelace_exact(P->p, P->n);
+    /* Exact per ring, then rounded: a plain shoelace sum can come out zero
+    ** or even negative for a valid but thin polygon, breaking "positive for
+    ** counter-clockwise".  Holes are stored clockwise: they subtract. */
+    double a = 0.0;
+    for (uint32_t k = 0; k < P->n_rings; k++)
+        a += wk_shoelace_exact(P->p + P->ring_start[k], ring_size(P, k));
+    return 0.5 * a;
 }
 
 bool wk_polygon_is_reflex(const wk_polygon *P, uint32_t i) {
-    uint32_t n = P->n;
-    /* Strict right turn at a counter-clockwise vertex; straight on (180
-    ** degrees) is not reflex. */
-    return wk_orient2d(P->p[prev_of(i, n)], P->p[i], P->p[next_of(i, n)], NULL) < 0;
+    /* Strict right turn (the interior is on the left of every stored edge);
+    ** straight on (180 degrees) is not reflex. */
+    return wk_orient2d(P->p[wk_polygon_prev(P, i)], P->p[i], P->p[wk_polygon_next(P, i)], NULL) < 0;
 }
 
 void wk_polygon_bbox(const wk_polygon *P, wk_point *lo, wk_point *hi) {
@@ -636,10 +815,13 @@ double wk_polygon_scale(const wk_polygon *P) {
 }
 
 uint32_t wk_polygon_input_edge(const wk_polygon *P, uint32_t e) {
-    if (!P->reversed) return e;
-    /* Stored edge e runs input vertex n-1-e -> n-2-e: input edge n-2-e, or
-    ** n-1 (input vertex n-1 -> 0) for e = n-1. */
-    return e + 1 < P->n ? P->n - 2 - e : P->n - 1;
+    /* A ring kept as given: stored edge e is input edge input_index[e].  A
+    ** reversed ring (its first stored vertex is its last input one): stored
+    ** edge e runs backwards along the input edge that starts at the input
+    ** vertex stored at next(e). */
+    uint32_t k = wk_polygon_ring(P, e), s = P->ring_start[k];
+    bool reversed = P->input_index[s] != s;
+    return P->input_index[reversed ? wk_polygon_next(P, e) : e];
 }
 
 uint32_t wk_polygon_output_node(const wk_polygon *P, uint32_t j) {
@@ -648,10 +830,17 @@ uint32_t wk_polygon_output_node(const wk_polygon *P, uint32_t j) {
 
 wk_status wk_polygon_write_wpoly(wk_run *R, FILE *f, const wk_polygon *P) {
     errno = 0;
-    fprintf(f, "# wskel polygon: %u vertices, counter-clockwise; x y weight\n%u\n", P->n, P->n);
+    if (P->n_rings == 1)
+        fprintf(f, "# wskel polygon: %u vertices, counter-clockwise; x y weight\n", P->n);
+    else
+        fprintf(f, "# wskel polygon: %u vertices in %u rings (the outer one counter-clockwise, "
+                "%u holes clockwise); x y weight\n", P->n, P->n_rings, P->n_rings - 1);
     /* %.17g round-trips every double. */
-    for (uint32_t i = 0; i < P->n; i++)
-        fprintf(f, "%.17g %.17g %.17g\n", P->p[i].x, P->p[i].y, P->w[i]);
+    for (uint32_t k = 0; k < P->n_rings; k++) {
+        fprintf(f, "%u\n", ring_size(P, k));
+        for (uint32_t i = P->ring_start[k]; i < ring_end(P, k); i++)
+            fprintf(f, "%.17g %.17g %.17g\n", P->p[i].x, P->p[i].y, P->w[i]);
+    }
     if (fflush(f) != 0 || ferror(f))
         return WK_FAIL(R, WK_EINPUT, P->name, 0, "cannot write the polygon: %s",
                        errno ? strerror(errno) : "write error");

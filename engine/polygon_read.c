@@ -6,6 +6,9 @@
 **     n                  vertex count, a positive integer, alone on its line
 **     x y [w]            n lines; w (the weight of the edge from this vertex
 **                        to the next) defaults to 1
+**     m                  optional further rings (holes), each its own count
+**     x y [w]            line and m vertex lines; the first ring is the
+**                        outer boundary; any ring in either orientation
 ** Blank lines are ignored anywhere.  Numbers are C strtod syntax, and must be
 ** finite.  Every message carries the line it is about.
 ** Bytes: lines end in LF or CRLF; the blanks are space and tab.  No NUL byte
@@ -19,9 +22,13 @@
 ** GraphML (Salzburg database, surfer2, monos): <key> elements map attribute
 ** names to key ids; nodes carry <data key=ID> for "vertex-coordinate-x" and
 ** "vertex-coordinate-y", edges optionally for "edge-weight" (default: the
-** key's <default>, else 1).  The edges must form one simple cycle through all
-** nodes; it is ordered from the first node in document order, leaving along
-** that node's first edge in document order.
+** key's <default>, else 1).  The edges must form disjoint simple cycles
+** through all nodes (every node on exactly two edges): one is a simple
+** polygon, several a polygon with holes, the cycle of largest area being the
+** outer boundary.  Each cycle is walked from its first node in document
+** order, leaving along that node's first edge in document order; input
+** numbering is the outer cycle's vertices, then the holes' in the order of
+** their first nodes in the document.
 **
 ** Both readers only collect arrays and leave every geometric check to
 ** wk_polygon_from_arrays, passing the input line of each vertex (for GraphML
@@ -303,7 +310,8 @@ static void vertex_arrays_free(wk_run *R, vertex_arrays *A) {
 static wk_status parse_wpoly(wk_run *R, text *t, const char *name, wk_polygon **out) {
     vertex_arrays A = {0, NULL, NULL, NULL, NULL};
     wk_status st = WK_OK;
-    uint32_t n = 0, got = 0;
+    uint32_t m = 0, got = 0, total = 0; /* this ring's count, its vertices so far, all so far */
+    uint32_t *rings = NULL, n_rings = 0, cap_rings = 0;
     long count_line = 0, ln = 0;
     char *s = t->buf, *end = t->buf + t->len;
     if (is_utf16_bom(s, t->len)) return utf16_refused(R, name);
@@ -341,33 +349,50 @@ static wk_status parse_wpoly(wk_run *R, text *t, const char *name, wk_polygon **
             continue;
         }
         int k = tokenize(line, tok, tl);
-        if (count_line == 0) {
+        if (got == m) {
+            /* a count line: the first ring's (the outer boundary) or a hole's */
+            if (n_rings > 0 && k != 1) {
+                st = WK_FAIL(R, WK_EINPUT, name, ln,
+                             "extra line: the count on line %ld announces %u vertices (a hole "
+                             "starts with its own vertex count line)",
+                             count_line, m);
+                goto done;
+            }
             count_line = ln;
-            if (k != 1 || !parse_count(tok[0], tl[0], &n)) {
+            if (k != 1 || !parse_count(tok[0], tl[0], &m)) {
                 st = WK_FAIL(R, WK_EINPUT, name, ln,
-                             "expected the vertex count, a positive integer alone on its line "
+                             "expected the %s, a positive integer alone on its line "
                              "(got '%.40s'%s)",
-                             tok[0], k > 1 ? " and more" : "");
+                             n_rings == 0 ? "vertex count" : "vertex count of a hole", tok[0],
+                             k > 1 ? " and more" : "");
                 goto done;
             }
-            if (n > WK_POLYGON_MAX_N) {
+            if (m > WK_POLYGON_MAX_N - total) {
                 st = WK_FAIL(R, WK_EINPUT, name, ln,
-                             "too many vertices (%.40s; the limit is %u)", tok[0],
-                             WK_POLYGON_MAX_N);
+                             "too many vertices (%.40s%s; the limit is %u)", tok[0],
+                             n_rings ? " more" : "", WK_POLYGON_MAX_N);
                 goto done;
             }
-            if (n < 3) {
-                st = WK_FAIL(R, WK_EINPUT, name, ln,
-                             "polygon needs at least 3 vertices (got %u)", n);
+            if (m < 3) {
+                st = n_rings == 0 ? WK_FAIL(R, WK_EINPUT, name, ln,
+                                            "polygon needs at least 3 vertices (got %u)", m)
+                                  : WK_FAIL(R, WK_EINPUT, name, ln,
+                                            "hole %u needs at least 3 vertices (got %u)", n_rings,
+                                            m);
                 goto done;
             }
-            if ((st = vertex_arrays_alloc(R, &A, n < nlines ? n : (uint32_t)nlines)) != WK_OK)
+            if (n_rings == WK_POLYGON_MAX_RINGS) {
+                st = WK_FAIL(R, WK_EINPUT, name, ln, "too many rings (the limit is %u)",
+                             WK_POLYGON_MAX_RINGS);
                 goto done;
-        } else if (got == n) {
-            st = WK_FAIL(R, WK_EINPUT, name, ln,
-                         "extra line: the count on line %ld announces %u vertices", count_line,
-                         n);
-            goto done;
+            }
+            if ((st = WK_GROW(R, rings, cap_rings, n_rings + 1)) != WK_OK) goto done;
+            rings[n_rings++] = m;
+            got = 0;
+            if (!A.x) {
+                uint64_t cap = nlines < WK_POLYGON_MAX_N ? nlines : WK_POLYGON_MAX_N;
+                if ((st = vertex_arrays_alloc(R, &A, (uint32_t)cap)) != WK_OK) goto done;
+            }
         } else {
             if (k < 2 || k > 3) {
                 st = WK_FAIL(R, WK_EINPUT, name, ln,
@@ -381,28 +406,31 @@ static wk_status parse_wpoly(wk_run *R, text *t, const char *name, wk_polygon **
                                  tok[i], tl[i] > 40 ? "..." : "");
                     goto done;
                 }
-            A.x[got] = v[0];
-            A.y[got] = v[1];
-            A.w[got] = v[2];
-            A.line[got] = ln;
+            /* total < nlines: every vertex has its own line */
+            A.x[total] = v[0];
+            A.y[total] = v[1];
+            A.w[total] = v[2];
+            A.line[total] = ln;
             got++;
+            total++;
         }
         if (!nl) break;
     }
-    if (count_line == 0) {
+    if (n_rings == 0) {
         st = WK_FAIL(R, WK_EINPUT, name, ln > 0 ? ln : 1,
                      "no vertex count: the input is empty or only comments");
         goto done;
     }
-    if (got < n) {
+    if (got < m) {
         st = WK_FAIL(R, WK_EINPUT, name, count_line,
-                     "the count announces %u vertices but only %u vertex line%s follow%s", n,
+                     "the count announces %u vertices but only %u vertex line%s follow%s", m,
                      got, got == 1 ? "" : "s", got == 1 ? "s" : "");
         goto done;
     }
-    st = wk_polygon_from_arrays(R, n, A.x, A.y, A.w, name, A.line, out);
+    st = wk_polygon_from_rings(R, n_rings, rings, A.x, A.y, A.w, name, A.line, out);
 done:
     vertex_arrays_free(R, &A);
+    if (rings) WK_FREE_ARRAY(R, rings, cap_rings);
     return st;
 }
 
@@ -680,7 +708,7 @@ static wk_status node_coordinate(wk_run *R, const char *name, graph *G, uint32_t
 
 /* Everything after parsing: keys, nodes, edges, the cycle. */
 static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_polygon **out) {
-    char d1[160], d2[160], bad[48];
+    char d1[160], bad[48];
     const gkey none = {{NULL, NULL}, {NULL, NULL}};
     gkey kx = none, ky = none, kw = none, ka = none;
     graph G;
@@ -877,39 +905,80 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
             goto done;
         }
 
-    /* Walk the cycle from node 0 along its first edge. */
+    /* Walk every cycle: from the first node in document order not yet on
+    ** one, along its first edge.  Then the ring of largest area (the one
+    ** that contains all others, if the input is valid) goes first as the
+    ** outer boundary; the others follow in the order walked.  Containment
+    ** itself is checked by wk_polygon_from_rings. */
     if ((st = vertex_arrays_alloc(R, &G.cyc, G.nn)) != WK_OK) goto done;
-    uint32_t *seen = G.deg; /* reused: 2 = not yet visited, 0 = visited */
-    uint32_t cur = 0, e = G.inc[0], k = 0;
-    for (;;) {
-        seen[cur] = 0;
-        G.cyc.x[k] = G.nx[cur];
-        G.cyc.y[k] = G.ny[cur];
-        G.cyc.w[k] = G.ew[e];
-        G.cyc.line[k] = xmlGetLineNo(G.node[cur]);
-        k++;
-        uint32_t nxt = G.src[e] == cur ? G.dst[e] : G.src[e];
-        if (nxt == 0) break;
-        if (seen[nxt] == 0) { /* defensive: a 2-regular walk returns to its start */
-            st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[nxt]),
-                         "the edges do not form a simple cycle at node '%.60s'",
-                         (const char *)G.id[nxt].s);
-            goto done;
-        }
-        e = G.inc[2 * (size_t)nxt] == e ? G.inc[2 * (size_t)nxt + 1] : G.inc[2 * (size_t)nxt];
-        cur = nxt;
-    }
-    if (k < G.nn) {
-        uint32_t v = 0;
-        while (seen[v] == 0) v++;
-        snprintf(d2, sizeof d2, "'%.60s'", (const char *)G.id[0].s);
-        st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[v]),
-                     "the edges form more than one cycle: %s is not on the cycle through node %s "
-                     "(%u of %u nodes)",
-                     describe_element(G.node[v], "node", v, d1, sizeof d1), d2, k, G.nn);
+    uint32_t cap_rings = G.nn / 3 + 1, n_rings = 0;
+    uint32_t *ring = WK_NEW_ARRAY(R, uint32_t, cap_rings);
+    if (!ring) {
+        st = WK_ENOMEM;
         goto done;
     }
-    st = wk_polygon_from_arrays(R, G.nn, G.cyc.x, G.cyc.y, G.cyc.w, name, G.cyc.line, out);
+    uint32_t *seen = G.deg; /* reused: 2 = not yet visited, 0 = visited */
+    uint32_t k = 0, start = 0, outer = 0;
+    double best = -1.0;
+    while (k < G.nn) {
+        while (seen[start] == 0) start++;
+        uint32_t cur = start, e = G.inc[2 * (size_t)start], k0 = k;
+        for (;;) {
+            seen[cur] = 0;
+            G.cyc.x[k] = G.nx[cur];
+            G.cyc.y[k] = G.ny[cur];
+            G.cyc.w[k] = G.ew[e];
+            G.cyc.line[k] = xmlGetLineNo(G.node[cur]);
+            k++;
+            uint32_t nxt = G.src[e] == cur ? G.dst[e] : G.src[e];
+            if (nxt == start) break;
+            if (seen[nxt] == 0) { /* defensive: a 2-regular walk returns to its start */
+                st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[nxt]),
+                             "the edges do not form a simple cycle at node '%.60s'",
+                             (const char *)G.id[nxt].s);
+                WK_FREE_ARRAY(R, ring, cap_rings);
+                goto done;
+            }
+            e = G.inc[2 * (size_t)nxt] == e ? G.inc[2 * (size_t)nxt + 1] : G.inc[2 * (size_t)nxt];
+            cur = nxt;
+        }
+        /* |area| in doubles: only to pick the outer ring; a wrong pick on a
+        ** near-tie means an invalid input, which the checks then reject */
+        double area = 0.0;
+        for (uint32_t i = k0; i < k; i++) {
+            uint32_t j = i + 1 == k ? k0 : i + 1;
+            area += (G.cyc.x[i] - G.cyc.x[k0]) * (G.cyc.y[j] - G.cyc.y[k0]) -
+                    (G.cyc.x[j] - G.cyc.x[k0]) * (G.cyc.y[i] - G.cyc.y[k0]);
+        }
+        if (fabs(area) > best) {
+            best = fabs(area);
+            outer = n_rings;
+        }
+        ring[n_rings++] = k - k0; /* n_rings <= nn / 3: every cycle has >= 3 nodes */
+    }
+    if (outer != 0) {
+        /* rotate the outer ring's block to the front: reverse the blocks
+        ** [0, a) and [a, a + m), then both together */
+        uint32_t a = 0;
+        for (uint32_t r = 0; r < outer; r++) a += ring[r];
+        uint32_t m = ring[outer];
+        vertex_arrays *C = &G.cyc;
+        uint32_t spans[3][2] = {{0, a}, {a, a + m}, {0, a + m}};
+        for (int pass = 0; pass < 3; pass++)
+            for (uint32_t i = spans[pass][0], j = spans[pass][1]; i + 1 < j; i++, j--) {
+                double t;
+                long l;
+                t = C->x[i], C->x[i] = C->x[j - 1], C->x[j - 1] = t;
+                t = C->y[i], C->y[i] = C->y[j - 1], C->y[j - 1] = t;
+                t = C->w[i], C->w[i] = C->w[j - 1], C->w[j - 1] = t;
+                l = C->line[i], C->line[i] = C->line[j - 1], C->line[j - 1] = l;
+            }
+        for (uint32_t r = outer; r > 0; r--) ring[r] = ring[r - 1];
+        ring[0] = m;
+    }
+    st = wk_polygon_from_rings(R, n_rings, ring, G.cyc.x, G.cyc.y, G.cyc.w, name, G.cyc.line,
+                               out);
+    WK_FREE_ARRAY(R, ring, cap_rings);
 done:
     graph_free(R, &G);
     gkey_clear(&kx);

@@ -230,7 +230,7 @@ static inline void offer(const wk_ray_hit *h, wk_ray_hit *best, bool *found) {
 ** the vertex alone, so both edges at a vertex offer the same bits. */
 static inline void test_edge(const wk_polygon *P, double tol, wk_point o, wk_point u, uint32_t skip,
                              uint32_t e, wk_ray_hit *best, bool *found) {
-    uint32_t f = e + 1 == P->n ? 0 : e + 1;
+    uint32_t f = wk_polygon_next(P, e);
     if (skip != WK_NONE && (e == skip || f == skip)) return;
     wk_point a = P->p[e], b = P->p[f];
     double ax = a.x - o.x, ay = a.y - o.y, bx = b.x - o.x, by = b.y - o.y;
@@ -308,7 +308,7 @@ bool wk_ray_shoot(const wk_ray_shooter *S, wk_point o, wk_point u, uint32_t from
 static void edge_of(const void *ud, uint32_t i, wk_point *a, wk_point *b) {
     const wk_polygon *P = ud;
     *a = P->p[i];
-    *b = P->p[i + 1 == P->n ? 0 : i + 1];
+    *b = P->p[wk_polygon_next(P, i)];
 }
 
 wk_status wk_ray_shooter_init(wk_run *R, wk_ray_shooter *S, const wk_polygon *P) {

@@ -206,7 +206,18 @@ static void full_candidate(wk_wavefront *W, uint32_t vi) {
 void wk_wf_split_scan(wk_wavefront *W, uint32_t vi) {
     wk_wf_split_search s;
     wk_wf_split_begin(W, vi, &s);
-    for (uint32_t a = W->v[vi].next; a != vi; a = W->v[a].next) wk_wf_split_test(W, &s, a);
+    if (W->P->n_rings == 1) {
+        /* one ring: a split cuts a cycle in two, so only vi's own cycle can
+        ** be hit */
+        for (uint32_t a = W->v[vi].next; a != vi; a = W->v[a].next) wk_wf_split_test(W, &s, a);
+    } else {
+        /* holes: vi may hit a piece of another cycle (a split then joins
+        ** the two cycles), so every alive piece is a candidate.  A cycle
+        ** already cut off from vi's region is harmless: vi would have to
+        ** cross its own cycle first, an earlier event. */
+        for (uint32_t a = 0; a < W->nv; a++)
+            if (a != vi && W->v[a].alive) wk_wf_split_test(W, &s, a);
+    }
     wk_wf_split_offer(W, &s);
 }
 
@@ -359,13 +370,15 @@ static wk_status simulate(wk_wavefront *W) {
     wk_run *R = W->R;
     const wk_polygon *P = W->P;
     uint32_t n = P->n;
-    /* the initial wavefront: one vertex per input vertex */
+    /* the initial wavefront: one vertex per input vertex, one cycle per
+    ** ring (holes are stored clockwise, so the interior is left of every
+    ** piece and every cycle moves the same way) */
     for (uint32_t i = 0; i < n; i++) {
         wk_point q = {P->p[i].x - W->origin.x, P->p[i].y - W->origin.y};
-        uint32_t id = wf_new_vertex(W, (i + n - 1) % n, i, q, 0.0, i);
+        uint32_t id = wf_new_vertex(W, wk_polygon_prev(P, i), i, q, 0.0, i);
         if (id == WK_NONE) return R->err.code;
     }
-    for (uint32_t i = 0; i < n; i++) wf_link(W, i, (i + 1) % n);
+    for (uint32_t i = 0; i < n; i++) wf_link(W, i, wk_polygon_next(P, i));
     W->t_now = 0;
     W->n_fresh = 0;
     W->n_dead = 0;

@@ -147,11 +147,20 @@ static wk_status collect_cycles(wk_wavefront *W) {
     W->stamp++;
     W->n_comp = 0;
     W->n_cyc = 0;
-    for (int pass = 0; pass < 2; pass++) {
-        uint32_t n = pass ? W->n_forced : W->n_seeds;
-        const uint32_t *src = pass ? W->forced : W->seeds;
+    /* pass 0: the seeds' cycles; 1: the forced vertices'; 2: the cycles of
+    ** the split seeds' target pieces (with holes a split may join two
+    ** cycles, and the target's cycle need hold no seed) */
+    for (int pass = 0; pass < 3; pass++) {
+        uint32_t n = pass == 1 ? W->n_forced : W->n_seeds;
+        const uint32_t *src = pass == 1 ? W->forced : W->seeds;
         for (uint32_t i = 0; i < n; i++) {
             uint32_t s = src[i];
+            if (pass == 2) {
+                const wk_wf_vertex *S = &W->v[s];
+                if (S->ev_kind != WK_WF_SPLIT || S->ev_a == WK_NONE || !W->v[S->ev_a].alive)
+                    continue;
+                s = S->ev_a;
+            }
             if (W->v[s].seen == W->stamp) continue;
             uint32_t u = s;
             do {

@@ -53,7 +53,10 @@ wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skelet
     put_string(f, info && info->variant ? info->variant : "unknown");
     fputs(",\"k\":", f);
     put_k(f, info);
-    fprintf(f, ",\"n\":%u,\"r\":%u,\n\"nodes\":[\n", P->n, P->r);
+    fprintf(f, ",\"n\":%u,\"r\":%u,\"rings\":[", P->n, P->r);
+    for (uint32_t k = 0; k < P->n_rings; k++)
+        fprintf(f, "%s%u", k ? "," : "", P->ring_start[k + 1] - P->ring_start[k]);
+    fputs("],\n\"nodes\":[\n", f);
     for (uint32_t i = 0; i < S->n_nodes; i++) {
         const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
         fputc('[', f);

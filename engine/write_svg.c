@@ -47,7 +47,7 @@ static void put_xml_text(FILE *f, const char *s) {
 /* Segments of face e's wavefront at time t, as path commands. */
 static void put_offset(FILE *f, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
                        const uint32_t *cyc, uint32_t len, double t, cut *cuts) {
-    wk_point p = P->p[e], q = P->p[e + 1 == P->n ? 0 : e + 1];
+    wk_point p = P->p[e], q = P->p[wk_polygon_next(P, e)];
     double dx = q.x - p.x, dy = q.y - p.y, l = hypot(dx, dy);
     if (!(l > 0)) return;
     dx /= l;
@@ -129,12 +129,16 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
     fprintf(f, ": weighted straight skeleton, %u nodes, %u arcs (blue convex, orange reflex)"
                "</title>\n<g stroke-linecap=\"round\" stroke-linejoin=\"round\">\n",
             S->n_nodes, S->n_arcs);
-    fprintf(f, "<polygon class=\"polygon\" fill=\"#f4f1e4\" stroke=\"#333333\" "
-               "stroke-width=\"%.4g\" points=\"",
+    /* one path, a subpath per ring; evenodd leaves the holes unfilled */
+    fprintf(f, "<path class=\"polygon\" fill=\"#f4f1e4\" fill-rule=\"evenodd\" "
+               "stroke=\"#333333\" stroke-width=\"%.4g\" d=\"",
             sw);
-    for (uint32_t i = 0; i < P->n; i++) {
-        if (i) fputc(' ', f);
-        put_xy(f, P->p[i].x, P->p[i].y);
+    for (uint32_t k = 0; k < P->n_rings; k++) {
+        for (uint32_t i = P->ring_start[k]; i < P->ring_start[k + 1]; i++) {
+            fputs(i == P->ring_start[k] ? (k ? " M" : "M") : " L", f);
+            put_xy(f, P->p[i].x, P->p[i].y);
+        }
+        fputs(" Z", f);
     }
     fputs("\"/>\n", f);
     if (n_offsets) put_offsets(f, P, S, &F, offsets, n_offsets, sw, cuts);

@@ -74,7 +74,9 @@ wk_status wk_write_vtp(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
 
     fputs("<Lines>\n", f);
     open_array(f, "Int64", "connectivity");
-    for (uint32_t i = 0; i < n; i++) fprintf(f, "%u %u\n", i, i + 1 == n ? 0 : i + 1);
+    /* input vertex i to the next of its ring: input numbering keeps each
+    ** ring's index range, so wk_polygon_next's arithmetic holds for it */
+    for (uint32_t i = 0; i < n; i++) fprintf(f, "%u %u\n", i, wk_polygon_next(P, i));
     for (uint32_t i = 0; i < M; i++)
         fprintf(f, "%u %u\n", wk_polygon_output_node(P, S->arcs[i].a),
                 wk_polygon_output_node(P, S->arcs[i].b));

@@ -322,15 +322,41 @@ static inline void wk_count(wk_run *R, uint32_t counter, uint64_t n) {
 ** predicates form far from overflow. */
 #define WK_POLYGON_MAX_COORD 1e150
 
+/* A polygon, possibly with holes: ring 0 is the outer boundary, rings 1..
+** are holes.  Stored vertex ids run over the rings in order: ring k is
+** p[ring_start[k] .. ring_start[k+1]), and stored edge j runs from vertex j
+** to wk_polygon_next(P, j) (the ring closes implicitly).  The outer ring is
+** stored counter-clockwise, holes clockwise, so the interior is on the left
+** of every edge and everything local (offset lines, reflex tests, bisectors)
+** reads the same for holes. */
 typedef struct wk_polygon {
-    uint32_t n;          /* vertices (= edges), >= 3 */
+    uint32_t n;          /* vertices (= edges) over all rings, >= 3 */
     uint32_t r;          /* reflex vertices (interior angle > pi) */
-    wk_point *p;         /* counter-clockwise */
-    double *w;           /* w[i]: weight of edge i (p[i] -> p[i+1]), > 0 */
-    bool reversed;       /* input was clockwise and was reversed */
-    uint32_t *input_index; /* input_index[i]: the input line order of p[i] */
+    wk_point *p;         /* outer ring counter-clockwise, holes clockwise */
+    double *w;           /* w[i]: weight of edge i (p[i] -> next), > 0 */
+    uint32_t n_rings;    /* 1 + the number of holes */
+    uint32_t *ring_start; /* n_rings + 1 offsets; ring_start[n_rings] == n */
+    uint32_t *ring_of;   /* ring of each stored vertex; NULL when n_rings == 1 */
+    bool reversed;       /* the outer ring's input was clockwise and was reversed */
+    uint32_t *input_index; /* input_index[i]: the input number of stored vertex i */
     char name[256];      /* file name for messages */
 } wk_polygon;
+
+/* Largest number of rings (1 + holes) accepted. */
+#define WK_POLYGON_MAX_RINGS 10000000u
+
+static inline uint32_t wk_polygon_ring(const wk_polygon *P, uint32_t i) {
+    return P->ring_of ? P->ring_of[i] : 0;
+}
+/* The next and previous stored vertex on i's ring. */
+static inline uint32_t wk_polygon_next(const wk_polygon *P, uint32_t i) {
+    uint32_t k = wk_polygon_ring(P, i);
+    return i + 1 == P->ring_start[k + 1] ? P->ring_start[k] : i + 1;
+}
+static inline uint32_t wk_polygon_prev(const wk_polygon *P, uint32_t i) {
+    uint32_t k = wk_polygon_ring(P, i);
+    return i == P->ring_start[k] ? P->ring_start[k + 1] - 1 : i - 1;
+}
 
 /* Build a polygon from arrays (copied), validate it (see wk_polygon_validate)
 ** and orient it counter-clockwise.  w may be NULL (unit weights).  name is
@@ -339,6 +365,17 @@ typedef struct wk_polygon {
 wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const double *y,
                                  const double *w, const char *name, const long *lines,
                                  wk_polygon **out);
+/* The same for a polygon with holes: n_rings rings of ring_size[k] >= 3
+** vertices each, concatenated in x, y (and w, lines); ring 0 is the outer
+** boundary.  Each ring may come in either orientation; it is stored as the
+** struct says, weights staying on their edges, input numbering kept (input
+** vertex i is the i-th of the arrays, input edge i runs from it to the next
+** vertex of its ring).  Checks, besides each ring's own: rings pairwise
+** disjoint (not even touching), every hole strictly inside the outer ring,
+** no hole inside another. */
+wk_status wk_polygon_from_rings(wk_run *R, uint32_t n_rings, const uint32_t *ring_size,
+                                const double *x, const double *y, const double *w,
+                                const char *name, const long *lines, wk_polygon **out);
 /* Read a .wpoly or GraphML file (chosen by content; "-" reads stdin). */
 wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out);
 wk_status wk_polygon_read_wpoly(wk_run *R, FILE *f, const char *name, wk_polygon **out);
@@ -353,13 +390,13 @@ void wk_polygon_free(wk_run *R, wk_polygon *P);
 ** date.  WK_OK or WK_EINPUT; uses O(n) scratch memory (may fail WK_ENOMEM). */
 wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P);
 /* Input numbering.  Stored vertex j is input vertex P->input_index[j]; stored
-** edge j (p[j] -> p[j+1]) is input edge wk_polygon_input_edge(P, j), where
-** input edge i runs from input vertex i to input vertex i+1.  Writers emit
+** edge j (p[j] -> next) is input edge wk_polygon_input_edge(P, j), where
+** input edge i runs from input vertex i to the next input vertex of its ring.  Writers emit
 ** input numbering; algorithms and the validator use stored numbering. */
 uint32_t wk_polygon_input_edge(const wk_polygon *P, uint32_t e);
 /* Output id of skeleton node j: input_index[j] for j < n, j otherwise. */
 uint32_t wk_polygon_output_node(const wk_polygon *P, uint32_t j);
-/* Signed area (positive for counter-clockwise). */
+/* Signed area: the outer ring's minus the holes' (positive once stored). */
 double wk_polygon_area(const wk_polygon *P);
 /* True if vertex i is reflex (robust orientation test). */
 bool wk_polygon_is_reflex(const wk_polygon *P, uint32_t i);

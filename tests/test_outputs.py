@@ -19,7 +19,8 @@ curves) and vtp, and each file is checked against its contract:
   * text: the same nodes (same doubles) and arcs as the json;
   * obj: one vertex per node (x y t), one face per input edge whose face of
     input edge i contains input vertices i and i+1;
-  * svg: well-formed XML, the polygon with n points, one dot per node, the
+  * svg: well-formed XML, the polygon as one path with n points and a
+    subpath per ring, one dot per node, the
     requested offset curves;
   * vtp: vtk.vtkXMLPolyDataReader reads it: points = nodes with z = t, point
     data "t" with range [0, max t], n + arcs lines, n polygons equal to the
@@ -54,7 +55,7 @@ import testlib as tl  # noqa: E402
 VARIANT = os.environ.get("WSKEL_VARIANT")
 GOOD = os.path.join(tl.DATA, "good")
 OFFSETS = [0.05, 0.2]
-CONTRACT_KEYS = {"format", "variant", "k", "n", "r", "nodes", "arcs", "stats"}
+CONTRACT_KEYS = {"format", "variant", "k", "n", "r", "rings", "nodes", "arcs", "stats"}
 
 
 # ------------------------------------------------------------- polygons
@@ -177,6 +178,7 @@ class Outputs(unittest.TestCase):
         self.assertTrue(doc["k"] is None or doc["k"] == "max" or
                         (isinstance(doc["k"], int) and doc["k"] > 0), doc["k"])
         self.assertEqual(doc["n"], n)
+        self.assertEqual(doc["rings"], [n], "one ring without holes")
         self.assertEqual(doc["r"], len(reflex_vertices(pts)))
         nodes, arcs = doc["nodes"], doc["arcs"]
         N = len(nodes)
@@ -247,9 +249,11 @@ class Outputs(unittest.TestCase):
         root = ET.parse(path).getroot()
         self.assertTrue(root.tag.endswith("svg"), root.tag)
         ns = {"s": "http://www.w3.org/2000/svg"}
-        polys = root.findall(".//s:polygon", ns)
+        polys = [p for p in root.findall(".//s:path", ns) if p.get("class") == "polygon"]
         self.assertEqual(len(polys), 1)
-        self.assertEqual(len(polys[0].get("points").split()), doc["n"])
+        d = polys[0].get("d")
+        self.assertEqual(d.count("M") + d.count("L"), doc["n"])
+        self.assertEqual(d.count("Z"), len(doc["rings"]))
         self.assertEqual(len(root.findall(".//s:circle", ns)), len(doc["nodes"]))
         classes = [p.get("class") for p in root.findall(".//s:path", ns)]
         self.assertEqual(classes.count("offset"), len(OFFSETS))

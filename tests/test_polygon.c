@@ -1131,3 +1131,106 @@ Test(polygon, read_file_detects_graphml_after_blank_lines) {
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
 }
+
+/* ---- polygons with holes ---- */
+
+/* A square (counter-clockwise) with two holes: a triangle given
+** counter-clockwise (so it is reversed) and a square given clockwise (kept). */
+static const double HX[11] = {0, 10, 10, 0, 2, 4, 3, 6, 6, 8, 8};
+static const double HY[11] = {0, 0, 10, 10, 2, 2, 4, 6, 8, 8, 6};
+static const double HW[11] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+static const uint32_t HR[3] = {4, 3, 4};
+
+Test(polygon, holes_numbering_orientation_area) {
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = NULL;
+    cr_assert_eq(wk_polygon_from_rings(&R, 3, HR, HX, HY, HW, "h", NULL, &P), WK_OK, "%s",
+                 R.err.msg);
+    cr_assert_eq(P->n, 11);
+    cr_assert_eq(P->n_rings, 3);
+    cr_assert_not_null(P->ring_of);
+    cr_assert(!P->reversed);
+    /* area: 100 - 2 (triangle) - 4 (square) */
+    cr_assert_float_eq(wk_polygon_area(P), 94.0, 1e-12);
+    /* every stored edge keeps its input edge's weight and endpoints */
+    for (uint32_t j = 0; j < P->n; j++) {
+        uint32_t ie = wk_polygon_input_edge(P, j), k = wk_polygon_ring(P, j);
+        cr_assert_eq(P->w[j], HW[ie], "stored edge %u is input edge %u", j, ie);
+        cr_assert(j >= P->ring_start[k] && j < P->ring_start[k + 1]);
+        /* input edge ie runs from input vertex ie to the next of its ring */
+        uint32_t a = ie, b = ie + 1 == P->ring_start[k + 1] ? P->ring_start[k] : ie + 1;
+        uint32_t sa = P->input_index[j], sb = P->input_index[wk_polygon_next(P, j)];
+        cr_assert((sa == a && sb == b) || (sa == b && sb == a), "edge %u: %u-%u vs %u-%u", j, sa,
+                  sb, a, b);
+        cr_assert_eq(wk_polygon_prev(P, wk_polygon_next(P, j)), j);
+    }
+    /* the triangle was counter-clockwise: reversed in its own index range */
+    cr_assert_eq(P->input_index[4], 6);
+    cr_assert_eq(P->input_index[6], 4);
+    cr_assert_eq(P->input_index[7], 7, "the clockwise hole is kept");
+    /* holes' corners are reflex for the region: 3 + 4 */
+    cr_assert_eq(P->r, 7);
+    cr_assert_eq(wk_polygon_validate(&R, P), WK_OK, "%s", R.err.msg);
+    /* the writer emits rings, which the reader reads back to the same polygon */
+    FILE *f = tmpfile();
+    cr_assert_eq(wk_polygon_write_wpoly(&R, f, P), WK_OK);
+    rewind(f);
+    wk_polygon *Q = NULL;
+    cr_assert_eq(wk_polygon_read_wpoly(&R, f, "round", &Q), WK_OK, "%s", R.err.msg);
+    fclose(f);
+    cr_assert_eq(Q->n_rings, 3);
+    for (uint32_t j = 0; j < P->n; j++) {
+        cr_assert_eq(Q->p[j].x, P->p[j].x);
+        cr_assert_eq(Q->p[j].y, P->p[j].y);
+        cr_assert_eq(Q->w[j], P->w[j]);
+    }
+    wk_polygon_free(&R, Q);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+Test(polygon, holes_rejected_with_reasons) {
+    struct {
+        uint32_t n_rings, sizes[3];
+        double x[12], y[12];
+        const char *want;
+    } cases[] = {
+        {2, {4, 3}, {0, 10, 10, 0, 20, 22, 21}, {0, 0, 10, 10, 20, 20, 22},
+         "hole 1 (ring 1, vertices 4..6) is not inside the outer ring"},
+        {3, {4, 4, 3}, {0, 10, 10, 0, 2, 2, 8, 8, 4, 6, 5}, {0, 0, 10, 10, 2, 8, 8, 2, 4, 4, 6},
+         "hole 2 (ring 2) lies inside hole 1"},
+        {2, {3, 4}, {4, 6, 5, 0, 10, 10, 0}, {4, 4, 6, 0, 0, 10, 10},
+         "the outer ring (ring 0, the first) lies inside ring 1"},
+        {2, {4, 3}, {0, 10, 10, 0, 5, 6, 4}, {0, 0, 10, 10, 0, 3, 3}, "touches"},
+        {2, {4, 3}, {0, 10, 10, 0, 0, 3, 1}, {0, 0, 10, 10, 0, 1, 3}, "coincides"},
+        {2, {4, 2}, {0, 10, 10, 0, 2, 3}, {0, 0, 10, 10, 2, 3}, "ring 1 needs at least 3"},
+        {3, {4, 3, 3}, {0, 10, 10, 0, 2, 6, 4, 3, 7, 5}, {0, 0, 10, 10, 2, 2, 6, 3, 3, 7},
+         "crosses"},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        wk_run R;
+        wk_run_init(&R);
+        wk_polygon *P = NULL;
+        wk_status st = wk_polygon_from_rings(&R, cases[c].n_rings, cases[c].sizes, cases[c].x,
+                                             cases[c].y, NULL, "t", NULL, &P);
+        cr_assert_eq(st, WK_EINPUT, "case %zu: status %d", c, st);
+        cr_assert_null(P);
+        cr_assert(strstr(R.err.msg, cases[c].want), "case %zu: '%s' lacks '%s'", c, R.err.msg,
+                  cases[c].want);
+        ASSERT_CLEAN_CLOSE(R);
+    }
+}
+
+static wk_status op_rings(wk_run *R, wk_polygon **P) {
+    return wk_polygon_from_rings(R, 3, HR, HX, HY, HW, "h", NULL, P);
+}
+static wk_status op_holes_file(wk_run *R, wk_polygon **P) {
+    return read_data(R, "holes/triangle_hole.wpoly", P);
+}
+static wk_status op_holes_graphml(wk_run *R, wk_polygon **P) {
+    return read_data(R, "holes/triangle_hole_hole_first.graphml", P);
+}
+Test(polygon, fault_injection_rings) { fault_loop("rings", op_rings); }
+Test(polygon, fault_injection_holes_wpoly) { fault_loop("holes wpoly", op_holes_file); }
+Test(polygon, fault_injection_holes_graphml) { fault_loop("holes graphml", op_holes_graphml); }

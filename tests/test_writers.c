@@ -132,7 +132,7 @@ Test(write_json, contract_keys_and_round_trip) {
     cr_assert_eq(wk_write_json(&R, f, P, S, &info), WK_OK, "%s", R.err.msg);
     char *s = slurp(f);
     assert_json_shape(s);
-    const char *head = "{\"format\":\"wskel-1\",\"variant\":\"arrangement\",\"k\":null,\"n\":4,\"r\":0,\n";
+    const char *head = "{\"format\":\"wskel-1\",\"variant\":\"arrangement\",\"k\":null,\"n\":4,\"r\":0,\"rings\":[4],\n";
     cr_assert(!strncmp(s, head, strlen(head)), "%s", s);
     /* every counter of the engine and of the variant, and no other */
     for (uint32_t id = 0; id < wk_counter_count(AR); id++) {
@@ -352,7 +352,7 @@ Test(write_svg, layers_and_reflex_arc) {
     cr_assert(!strncmp(s, "<?xml", 5));
     cr_assert(strstr(s, "<svg xmlns=\"http://www.w3.org/2000/svg\""));
     cr_assert(strstr(s, "</svg>\n"));
-    cr_assert(strstr(s, "points=\"0,0 2,0 2,-1 1,-1 1,-2 0,-2\""), "%s", s);
+    cr_assert(strstr(s, "d=\"M0,0 L2,0 L2,-1 L1,-1 L1,-2 L0,-2 Z\""), "%s", s);
     cr_assert_eq(count_of(s, "<circle"), 9);
     const char *reflex = strstr(s, "class=\"reflex\"");
     const char *convex = strstr(s, "class=\"convex\"");

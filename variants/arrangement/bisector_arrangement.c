@@ -26,7 +26,7 @@
 
 /* Velocity direction and speed of reflex vertex v. */
 static void reflex_motion(const wk_polygon *P, uint32_t v, wk_aseg *g) {
-    uint32_t prev = v == 0 ? P->n - 1 : v - 1;
+    uint32_t prev = wk_polygon_prev(P, v);
     wk_offset_line la, lb;
     wk_offset_line_of_edge(P, prev, &la);
     wk_offset_line_of_edge(P, v, &lb);

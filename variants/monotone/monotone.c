@@ -91,6 +91,13 @@ static wk_status monotone_merge_run(mono *M, wk_skeleton **out) {
 ** reference_fallbacks counter says when that happened, and the first
 ** attempt's memory is freed before the fallback starts. */
 static wk_status monotone_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
+    *out = NULL;
+    /* 001 is about monotone polygons: one boundary chain pair, no holes */
+    if (P->n_rings > 1)
+        return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                       "variant monotone does not apply to polygons with holes (this one has %u); "
+                       "use --variant naive or arrangement",
+                       P->n_rings - 1);
     mono M;
     memset(&M, 0, sizeof M);
     M.R = R;
