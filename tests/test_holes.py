@@ -35,36 +35,13 @@ import testlib as tl  # noqa: E402
 CASES = int(os.environ.get("WSKEL_HOLES_CASES", "300"))
 HOLES_DIR = os.path.join(tl.DATA, "holes")
 
-# Generated cases on which the arrangement variant fails (exit 2: no
-# progress, or a vertex left when the queue ran empty): its finder with
-# holes is incomplete (variants/arrangement/README.md).  Seed -> what its
-# message must contain.  A listed case that passes fails the test.
-KNOWN_ARRANGEMENT = {
-    21: 'no progress',
-    32: 'no progress',
-    43: 'still alive when the queue ran empty',
-    69: 'no progress',
-    71: 'no progress',
-    78: 'still alive when the queue ran empty',
-    89: 'no progress',
-    100: 'still alive when the queue ran empty',
-    115: 'no progress',
-    122: 'no progress',
-    123: 'no progress',
-    131: 'still alive when the queue ran empty',
-    132: 'no progress',
-    149: 'no progress',
-    155: 'no progress',
-    158: 'no progress',
-    161: 'no progress',
-    164: 'no progress',
-    175: 'still alive when the queue ran empty',
-    184: 'no progress',
-    207: 'still alive when the queue ran empty',
-    211: 'no progress',
-    267: 'no progress',
-    290: 'no progress',
-}
+# Generated cases on which the arrangement variant fails: seed -> what its
+# message must contain.  A listed case that passes fails the test.  Empty
+# since the finder shoots its rays over every cycle when there are holes
+# (variants/arrangement/finder.c shoot_at: 24 of 299 cases failed with "no
+# progress" or "still alive when the queue ran empty" when it shot only
+# against v's own cycle).
+KNOWN_ARRANGEMENT = {}
 
 
 def ring_text(ring, ws):
@@ -207,7 +184,9 @@ class Holes(unittest.TestCase):
                 dropped += 1
         self.assertLessEqual(dropped, CASES // 20, "%d of %d generated cases were invalid "
                              "(the generator broke)" % (dropped, CASES))
-        self.assertEqual(tally.cases, CASES - dropped)
+        disconnected = len(tally.skipped.get("disconnected (unsupported)", []))
+        self.assertEqual(tally.cases + disconnected, CASES - dropped)
+        self.assertLessEqual(disconnected, CASES // 20)
         self.assertGreater(tally.cases, 0)
         tally.report(self, detail="%d dropped as invalid" % dropped)
 

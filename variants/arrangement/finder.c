@@ -174,21 +174,33 @@ static double hit_piece(const wk_wavefront *W, const ar_seg *S, uint32_t a, doub
     return lam;
 }
 
-/* The first piece of v's cycle that the ray o + lambda u (lambda >
-** lambda0) meets at time t: a static ray shot, O(cycle).  *at_end is set
-** when the hit is (within rounding) an end vertex of that piece. */
+static void shoot_piece(const wk_wavefront *W, const ar_seg *S, uint32_t v, uint32_t a, double t,
+                        double lambda0, uint32_t *best, double *bl, bool *at_end) {
+    double mu;
+    if (a == v || wk_wf_next(W, a) == v) return; /* v's own pieces */
+    double lam = hit_piece(W, S, a, t, lambda0, &mu);
+    if (lam < *bl) {
+        *bl = lam;
+        *best = a;
+        *at_end = mu < WK_RAY_END_SNAP || mu > 1 - WK_RAY_END_SNAP;
+    }
+}
+
+/* The first piece that the ray o + lambda u (lambda > lambda0) meets at
+** time t: a static ray shot over v's cycle, O(cycle), or, for a polygon
+** with holes, over every alive piece (the first piece along s may belong to
+** a hole's cycle that has not joined v's yet).  *at_end is set when the hit
+** is (within rounding) an end vertex of that piece. */
 static uint32_t shoot_at(const wk_wavefront *W, const ar_seg *S, uint32_t v, double t,
                          double lambda0, bool *at_end) {
     uint32_t best = WK_NONE;
-    double bl = INFINITY, mu;
-    for (uint32_t a = wk_wf_next(W, v); a != v; a = wk_wf_next(W, a)) {
-        if (wk_wf_next(W, a) == v) continue; /* v's own pieces */
-        double lam = hit_piece(W, S, a, t, lambda0, &mu);
-        if (lam < bl) {
-            bl = lam;
-            best = a;
-            *at_end = mu < WK_RAY_END_SNAP || mu > 1 - WK_RAY_END_SNAP;
-        }
+    double bl = INFINITY;
+    if (wk_wf_polygon(W)->n_rings == 1) {
+        for (uint32_t a = wk_wf_next(W, v); a != v; a = wk_wf_next(W, a))
+            shoot_piece(W, S, v, a, t, lambda0, &best, &bl, at_end);
+    } else {
+        for (uint32_t a = 0; a < wk_wf_vertex_count(W); a++)
+            if (wk_wf_alive(W, a)) shoot_piece(W, S, v, a, t, lambda0, &best, &bl, at_end);
     }
     return best;
 }
