@@ -17,6 +17,7 @@
 */
 #include "faces.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -89,11 +90,140 @@ wk_status wk_faces_check_ids(wk_run *R, const wk_polygon *P, const wk_skeleton *
     return WK_OK;
 }
 
+/* Room a face of k half-arcs needs: its k + 1 path nodes, or fewer path
+** nodes plus loops of >= 3 half-arcs each, every loop adding 2 bridge
+** nodes. */
+static uint32_t face_room(uint32_t k) { return k + 1 + 2 * (k / 3); }
+/* Scratch for the loops: their nodes (k), starts and done flags (k/3 + 2
+** each). */
+static uint32_t face_scratch(uint32_t k) { return k + 2 * (k / 3 + 2); }
+
+/* The loops of face e (an island inside the face, weighted skeletons with
+** holes): after the main walk, every unused half-arc must lie on a closed
+** loop of unused half-arcs.  Loop nodes go to loop[] (room k), their starts
+** to ls[] (room k / 3 + 2, ls[m] = end). */
+static wk_status walk_loops(wk_run *R, const wk_polygon *P, uint32_t e, half *h, uint32_t k,
+                            uint32_t *loop, uint32_t *ls, uint32_t *n_loops, const char *what) {
+    uint32_t m = 0, pos = 0;
+    for (uint32_t i = 0; i < k; i++) {
+        if (h[i].used) continue;
+        if (P->n_rings == 1)
+            return WK_FAIL(R, WK_EINVALID, P->name, 0,
+                           "%sface of edge %u: arc %u labelled %u is not on the path from node "
+                           "%u to node %u",
+                           what, e, h[i].arc, e, wk_polygon_next(P, e), e);
+        ls[m] = pos;
+        uint32_t start = h[i].from, j = i;
+        for (;;) {
+            h[j].used = 1;
+            loop[pos++] = h[j].from;
+            uint32_t cur = h[j].to;
+            if (cur == start) break;
+            j = find_from(h, k, cur);
+            if (j == WK_NONE || h[j].used)
+                return WK_FAIL(R, WK_EINVALID, P->name, 0,
+                               "%sface of edge %u: arc %u labelled %u is neither on the path from "
+                               "node %u to node %u nor on a closed loop (an island) of the face",
+                               what, e, h[i].arc, e, wk_polygon_next(P, e), e);
+        }
+        if (pos - ls[m] < 3)
+            return WK_FAIL(R, WK_EINVALID, P->name, 0,
+                           "%sface of edge %u: a loop of %u arcs through node %u", what, e,
+                           pos - ls[m], start);
+        m++;
+    }
+    ls[m] = pos;
+    *n_loops = m;
+    return WK_OK;
+}
+
+static wk_point node_xy(const wk_skeleton *S, uint32_t v) {
+    return (wk_point){S->nodes[v].x, S->nodes[v].y};
+}
+
+/* Bridge loop lp[0..L) into the cycle cyc[0..*len) (flags: bridge sides),
+** the classic hole-to-outer bridge of ear clipping: from the loop's
+** rightmost node q, a ray to +x meets the cycle first at a side; its end of
+** larger x, or the cycle vertex inside the triangle (q, hit, that end) with
+** the smallest angle to the ray, sees q.  The cycle becomes
+** ... u q (loop) q u ..., the two new sides u->q and q->u are flagged.
+** Loops are taken by decreasing max x, so the ray meets no loop not yet
+** bridged. */
+static wk_status bridge_loop(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
+                             uint32_t *cyc, uint8_t *flag, uint32_t *len, const uint32_t *lp,
+                             uint32_t L, const char *what) {
+    uint32_t qi = 0;
+    for (uint32_t i = 1; i < L; i++) {
+        wk_point a = node_xy(S, lp[i]), b = node_xy(S, lp[qi]);
+        if (a.x > b.x || (a.x == b.x && a.y > b.y)) qi = i;
+    }
+    wk_point q = node_xy(S, lp[qi]);
+    uint32_t n = *len, best = WK_NONE;
+    double bx = INFINITY;
+    for (uint32_t i = 0; i < n; i++) {
+        wk_point a = node_xy(S, cyc[i]), b = node_xy(S, cyc[i + 1 == n ? 0 : i + 1]);
+        if ((a.y > q.y && b.y > q.y) || (a.y < q.y && b.y < q.y)) continue;
+        double x;
+        if (a.y == b.y) x = fmin(a.x, b.x) >= q.x ? fmin(a.x, b.x) : fmax(a.x, b.x);
+        else x = a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y);
+        if (x >= q.x && x < bx) {
+            bx = x;
+            best = i;
+        }
+    }
+    if (best == WK_NONE)
+        return WK_FAIL(R, WK_EINVALID, P->name, 0,
+                       "%sface of edge %u: an island (loop through node %u) lies outside the "
+                       "face's outer cycle",
+                       what, e, lp[qi]);
+    uint32_t b1 = best + 1 == n ? 0 : best + 1;
+    wk_point hit = {bx, q.y};
+    uint32_t u = node_xy(S, cyc[best]).x >= node_xy(S, cyc[b1]).x ? best : b1;
+    wk_point pu = node_xy(S, cyc[u]);
+    if (!(pu.x == hit.x && pu.y == hit.y)) {
+        /* a vertex strictly inside the triangle (q, hit, pu) would block
+        ** the view: take the one closest in angle to the ray */
+        int turn = wk_orient2d(q, hit, pu, NULL);
+        double best_t = INFINITY, best_d = INFINITY;
+        for (uint32_t i = 0; i < n; i++) {
+            wk_point c = node_xy(S, cyc[i]);
+            if (i == u || (c.x == pu.x && c.y == pu.y)) continue;
+            if (wk_orient2d(q, hit, c, NULL) != turn || wk_orient2d(hit, pu, c, NULL) != turn ||
+                wk_orient2d(pu, q, c, NULL) != turn)
+                continue;
+            double dx = c.x - q.x, dy = fabs(c.y - q.y), tn = dy / dx, d = dx * dx + dy * dy;
+            if (tn < best_t || (tn == best_t && d < best_d)) {
+                best_t = tn;
+                best_d = d;
+                u = i;
+            }
+        }
+    }
+    /* ... cyc[u], lp[qi], lp[qi+1], ..., lp[qi-1], lp[qi], cyc[u], cyc[u+1] ... */
+    uint32_t add = L + 2;
+    memmove(cyc + u + 1 + add, cyc + u + 1, (size_t)(n - u - 1) * sizeof *cyc);
+    memmove(flag + u + 1 + add, flag + u + 1, (size_t)(n - u - 1) * sizeof *flag);
+    for (uint32_t j = 0; j <= L; j++) {
+        cyc[u + 1 + j] = lp[(qi + j) % L];
+        flag[u + 1 + j] = 0;
+    }
+    cyc[u + 2 + L] = cyc[u];
+    flag[u + 2 + L] = flag[u]; /* the side u -> old next keeps its flag */
+    flag[u] = 1;               /* u -> q */
+    flag[u + 1 + L] = 1;       /* q -> u */
+    *len = n + add;
+    return WK_OK;
+}
+
 /* Walk face e over its k half-arcs h (sorted here, in place) and write its
-** cycle into cyc, which has room for k + 1 nodes. */
-static wk_status walk_face(wk_run *R, const wk_polygon *P, uint32_t e, half *h, uint32_t k,
-                           uint32_t *cyc, uint32_t *len, const char *what) {
+** cycle into cyc (room face_room(k)), with flag[i] set for bridge sides
+** (cyc[i] -> cyc[i+1]) when the face has islands.  scratch: room
+** face_scratch(k). */
+static wk_status walk_face(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
+                           half *h, uint32_t k, uint32_t *cyc, uint8_t *flag, uint32_t *scratch,
+                           uint32_t *len, uint32_t *n_loops, const char *what) {
     uint32_t first = wk_polygon_next(P, e);
+    *n_loops = 0;
     if (k > 1) qsort(h, k, sizeof *h, half_cmp);
     for (uint32_t i = 1; i < k; i++)
         if (h[i].from == h[i - 1].from)
@@ -123,14 +253,32 @@ static wk_status walk_face(wk_run *R, const wk_polygon *P, uint32_t e, half *h, 
         /* After k steps every half-arc is used, so the next lookup reports. */
         if (steps < k) cyc[steps + 1] = cur;
     }
-    if (steps < k)
-        for (uint32_t i = 0; i < k; i++)
-            if (!h[i].used)
-                return WK_FAIL(R, WK_EINVALID, P->name, 0,
-                               "%sface of edge %u: arc %u labelled %u is not on the path from "
-                               "node %u to node %u",
-                               what, e, h[i].arc, e, first, e);
     *len = steps + 1;
+    for (uint32_t i = 0; i < *len; i++) flag[i] = 0;
+    if (steps == k) return WK_OK;
+    uint32_t *loop = scratch, *ls = scratch + k, *done = ls + (k / 3 + 2), m = 0;
+    if (walk_loops(R, P, e, h, k, loop, ls, &m, what) != WK_OK) return R->err.code;
+    /* bridge by decreasing max x, a selection: faces with islands are rare
+    ** and have few loops */
+    for (uint32_t l = 0; l < m; l++) done[l] = 0;
+    for (uint32_t round = 0; round < m; round++) {
+        uint32_t pick = WK_NONE;
+        double px = -INFINITY;
+        for (uint32_t l = 0; l < m; l++) {
+            double mx = -INFINITY;
+            for (uint32_t i = ls[l]; i < ls[l + 1]; i++) mx = fmax(mx, S->nodes[loop[i]].x);
+            if (!done[l] && mx > px) {
+                px = mx;
+                pick = l;
+            }
+        }
+        if (pick == WK_NONE) break; /* defensive: a NaN coordinate; (b) reports it */
+        if (bridge_loop(R, P, S, e, cyc, flag, len, loop + ls[pick], ls[pick + 1] - ls[pick],
+                        what) != WK_OK)
+            return R->err.code;
+        done[pick] = 1;
+    }
+    *n_loops = m;
     return WK_OK;
 }
 
@@ -150,35 +298,38 @@ wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, ui
     }
     if (k == 0)
         return WK_FAIL(R, WK_EINVALID, P->name, 0, "face of edge %u: no arc is labelled %u", e, e);
+    uint32_t room = face_room(k);
     half *h = WK_NEW_ARRAY(R, half, k);
-    uint32_t *cyc = h ? WK_NEW_ARRAY(R, uint32_t, (size_t)k + 1) : NULL;
-    if (!cyc) {
-        if (h) WK_FREE_ARRAY(R, h, k);
-        return R->err.code;
+    uint32_t *cyc = h ? WK_NEW_ARRAY(R, uint32_t, room) : NULL;
+    uint8_t *flag = cyc ? WK_NEW_ARRAY(R, uint8_t, room) : NULL;
+    uint32_t *scratch = flag ? WK_NEW_ARRAY(R, uint32_t, face_scratch(k)) : NULL;
+    wk_status st = scratch ? WK_OK : R->err.code;
+    uint32_t got = 0, loops = 0;
+    if (st == WK_OK) {
+        uint32_t m = 0;
+        for (uint32_t i = 0; i < S->n_arcs; i++)
+            if (S->arcs[i].left == e || S->arcs[i].right == e) h[m++] = make_half(S, i, e);
+        st = walk_face(R, P, S, e, h, k, cyc, flag, scratch, &got, &loops, "");
     }
-    uint32_t m = 0;
-    for (uint32_t i = 0; i < S->n_arcs; i++)
-        if (S->arcs[i].left == e || S->arcs[i].right == e) h[m++] = make_half(S, i, e);
-    uint32_t got = 0;
-    wk_status st = walk_face(R, P, e, h, k, cyc, &got, "");
-    WK_FREE_ARRAY(R, h, k);
-    if (st != WK_OK) {
-        WK_FREE_ARRAY(R, cyc, (size_t)k + 1);
-        return st;
-    }
-    /* got == k + 1 after a successful walk: the allocation size matches the
-    ** length the caller frees with. */
-    *cycle = cyc;
+    uint32_t *out = NULL;
+    if (st == WK_OK && !(out = WK_NEW_ARRAY(R, uint32_t, got))) st = R->err.code;
+    if (st == WK_OK) memcpy(out, cyc, (size_t)got * sizeof *out);
+    if (scratch) WK_FREE_ARRAY(R, scratch, face_scratch(k));
+    if (flag) WK_FREE_ARRAY(R, flag, room);
+    if (cyc) WK_FREE_ARRAY(R, cyc, room);
+    if (h) WK_FREE_ARRAY(R, h, k);
+    if (st != WK_OK) return st;
+    /* the allocation's size is the length the caller frees with */
+    *cycle = out;
     *len = got;
     return WK_OK;
 }
 
 void wk_faces_clear(wk_run *R, wk_faces *F) {
-    if (F->start) {
-        WK_FREE_ARRAY(R, F->node, F->start[F->n]);
-        WK_FREE_ARRAY(R, F->start, (size_t)F->n + 1);
-    }
-    F->n = 0;
+    if (F->start) WK_FREE_ARRAY(R, F->start, (size_t)F->n + 1);
+    if (F->node) WK_FREE_ARRAY(R, F->node, F->cap_node);
+    if (F->bridge) WK_FREE_ARRAY(R, F->bridge, F->cap_bridge);
+    memset(F, 0, sizeof *F);
 }
 
 wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, wk_faces *F,
@@ -187,14 +338,15 @@ wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, w
     if (wk_faces_check_ids(R, P, S, what) != WK_OK)
         return R->err.code;
     uint32_t n = P->n, A = S->n_arcs;
-    if (A > (UINT32_MAX - n) / 2)
+    if (A > (UINT32_MAX - n) / 4)
         return WK_FAIL(R, WK_ENOMEM, P->name, 0, "%u arcs: too many faces' nodes to index", A);
     size_t nh = 2 * (size_t)A;
     uint32_t *hs = WK_NEW_ARRAY(R, uint32_t, (size_t)n + 1);
     half *h = hs ? WK_NEW_ARRAY(R, half, nh) : NULL;
     uint32_t *start = h ? WK_NEW_ARRAY(R, uint32_t, (size_t)n + 1) : NULL;
-    uint32_t *node = start ? WK_NEW_ARRAY(R, uint32_t, nh + n) : NULL;
-    wk_status st = node ? WK_OK : R->err.code;
+    uint32_t *cyc = NULL, *scratch = NULL, room = 0, maxk = 0;
+    uint8_t *flag = NULL;
+    wk_status st = start ? WK_OK : R->err.code;
     if (st != WK_OK) goto done;
 
     /* Bucket the half-arcs by face: counts, prefix sums, fill (hs[e] then
@@ -211,23 +363,53 @@ wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, w
     }
     for (uint32_t e = n; e > 0; e--) hs[e] = hs[e - 1];
     hs[0] = 0;
+    for (uint32_t e = 0; e < n; e++)
+        if (hs[e + 1] - hs[e] > maxk) maxk = hs[e + 1] - hs[e];
 
-    /* Face e has k = hs[e+1] - hs[e] half-arcs, hence k + 1 cycle nodes. */
-    for (uint32_t e = 0; e <= n; e++) start[e] = hs[e] + e;
-    for (uint32_t e = 0; e < n && st == WK_OK; e++) {
-        uint32_t k = hs[e + 1] - hs[e], got = 0;
-        st = walk_face(R, P, e, h + hs[e], k, node + start[e], &got, what);
+    /* Face e has k = hs[e+1] - hs[e] half-arcs, hence k + 1 cycle nodes,
+    ** plus 2 per island (bridged, see bridge_loop): node[] starts at the
+    ** sum of k + 1 and grows only for faces with islands. */
+    room = face_room(maxk);
+    cyc = WK_NEW_ARRAY(R, uint32_t, room);
+    flag = cyc ? WK_NEW_ARRAY(R, uint8_t, room) : NULL;
+    scratch = flag ? WK_NEW_ARRAY(R, uint32_t, face_scratch(maxk)) : NULL;
+    if (!scratch || WK_GROW(R, F->node, F->cap_node, (uint32_t)(nh + n)) != WK_OK) {
+        st = R->err.code ? R->err.code : WK_ENOMEM;
+        goto done;
     }
+    uint32_t pos = 0;
+    for (uint32_t e = 0; e < n && st == WK_OK; e++) {
+        uint32_t k = hs[e + 1] - hs[e], got = 0, loops = 0;
+        st = walk_face(R, P, S, e, h + hs[e], k, cyc, flag, scratch, &got, &loops, what);
+        if (st != WK_OK) break;
+        if ((st = WK_GROW(R, F->node, F->cap_node, pos + got)) != WK_OK) break;
+        if (loops && !F->bridge &&
+            (st = WK_GROW(R, F->bridge, F->cap_bridge, F->cap_node)) == WK_OK)
+            memset(F->bridge, 0, F->cap_bridge);
+        if (st != WK_OK) break;
+        if (F->bridge && F->cap_bridge < F->cap_node) {
+            uint32_t old = F->cap_bridge;
+            if ((st = WK_GROW(R, F->bridge, F->cap_bridge, F->cap_node)) != WK_OK) break;
+            memset(F->bridge + old, 0, F->cap_bridge - old);
+        }
+        start[e] = pos;
+        memcpy(F->node + pos, cyc, (size_t)got * sizeof *cyc);
+        if (F->bridge) memcpy(F->bridge + pos, flag, got);
+        pos += got;
+    }
+    start[n] = pos;
 done:
+    if (scratch) WK_FREE_ARRAY(R, scratch, face_scratch(maxk));
+    if (flag) WK_FREE_ARRAY(R, flag, room);
+    if (cyc) WK_FREE_ARRAY(R, cyc, room);
     if (hs) WK_FREE_ARRAY(R, hs, (size_t)n + 1);
     if (h) WK_FREE_ARRAY(R, h, nh);
     if (st == WK_OK) {
         F->n = n;
         F->start = start;
-        F->node = node;
     } else {
-        if (node) WK_FREE_ARRAY(R, node, nh + n);
         if (start) WK_FREE_ARRAY(R, start, (size_t)n + 1);
+        wk_faces_clear(R, F);
     }
     return st;
 }

@@ -19,10 +19,20 @@
 #define WK_FACES_H
 #include "wskel.h"
 
+/* A face with islands (a weighted skeleton of a polygon with holes can be
+** disconnected: a hole's faces inside a faster edge's face) has, besides the
+** path from its edge, closed loops of arcs around each island; its cycle is
+** then one weakly simple cycle with each loop joined to the outer path by a
+** bridge, two opposite sides u -> q -> ... -> q -> u along one segment that
+** no arc crosses, and bridge[] flags those sides (the validator's
+** planarity test skips them; areas are unchanged, as the two cancel). */
 typedef struct wk_faces {
     uint32_t n;        /* faces = polygon edges */
     uint32_t *start;   /* n + 1 offsets: face e is node[start[e] .. start[e+1]) */
-    uint32_t *node;    /* every cycle, face e's beginning with nodes e, e+1 */
+    uint32_t *node;    /* every cycle, face e's beginning with nodes e, next(e) */
+    uint8_t *bridge;   /* bridge[i]: side node[i] -> its successor is a bridge;
+                          NULL when no face has an island */
+    uint32_t cap_node, cap_bridge; /* allocated entries */
 } wk_faces;
 
 /* Check that S fits P (n_input == n <= n_nodes) and that every arc has node

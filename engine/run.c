@@ -113,50 +113,6 @@ const char *wk_status_name(wk_status s) {
 
 /* ---- solve ---- */
 
-/* Weighted skeletons of polygons with holes can be disconnected: an edge
-** much faster than a hole's edges sweeps around the hole, its wavefront
-** closes behind it, and the hole's faces end up as an island inside the fast
-** edge's face, which then has a hole itself (Biedl, Held, Huber, Kaaser,
-** Palfrader, "Weighted straight skeletons in the plane", discuss when a
-** weighted skeleton is connected).  The validator and the writers model a
-** face as one cycle, so such an output is refused as unsupported (exit 2)
-** with this explanation rather than failing validation; with equal weights
-** the skeleton is always connected.  O(nodes + arcs). */
-static wk_status check_connected(wk_run *R, const wk_polygon *P, const wk_skeleton *S) {
-    if (P->n_rings == 1 || S->n_nodes == 0) return WK_OK;
-    uint32_t N = S->n_nodes, *parent = WK_NEW_ARRAY(R, uint32_t, N);
-    if (!parent) return R->err.code;
-    for (uint32_t v = 0; v < N; v++) parent[v] = v;
-    uint32_t components = N;
-    for (uint32_t i = 0; i < S->n_arcs; i++) {
-        uint32_t a = S->arcs[i].a, b = S->arcs[i].b;
-        if (a >= N || b >= N) continue; /* the validator reports it */
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        while (parent[b] != b) b = parent[b] = parent[parent[b]];
-        if (a != b) {
-            parent[a] = b;
-            components--;
-        }
-    }
-    uint32_t island = WK_NONE;
-    if (components > 1) {
-        uint32_t r0 = 0;
-        while (parent[r0] != r0) r0 = parent[r0];
-        for (uint32_t v = 0; v < P->n && island == WK_NONE; v++) {
-            uint32_t r = v;
-            while (parent[r] != r) r = parent[r];
-            if (r != r0) island = v;
-        }
-    }
-    WK_FREE_ARRAY(R, parent, N);
-    if (components == 1 || island == WK_NONE) return WK_OK; /* the validator judges the rest */
-    return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
-                   "the weighted skeleton is disconnected (%u components): the faces around "
-                   "hole %u (stored vertex %u) form an island inside a faster edge's face; "
-                   "wskel models every face as one cycle and does not output such skeletons yet",
-                   components, wk_polygon_ring(P, island), island);
-}
-
 wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skeleton **out,
                    double *time_s, size_t *peak_bytes) {
     *out = NULL;
@@ -169,7 +125,6 @@ wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skele
     clock_gettime(CLOCK_MONOTONIC, &t1);
     if (time_s) *time_s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     if (peak_bytes) *peak_bytes = R->alloc.peak - live0;
-    if (st == WK_OK) st = check_connected(R, P, *out);
     if (st != WK_OK) {
         /* Never half-return (CGAL): no skeleton on failure. */
         if (*out) wk_skeleton_free(R, *out);

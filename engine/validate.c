@@ -28,7 +28,11 @@
 **       along the skeleton and the boundary, so the skeleton together with
 **       the boundary rings has n faces and cyclomatic number n + h; the
 **       boundary's n edges take n of those, leaving h to the arcs, one
-**       around each hole.  At most one arc at an input
+**       around each hole.  With holes and unequal weights the skeleton may
+**       be disconnected (islands, faces.h): then components may be > 1 and
+**       arcs == nodes - components + h; (e) then checks that each island
+**       is a closed loop inside one face, and (f) the face's sides, loops
+**       included, pairwise (the bridges that faces.c adds are skipped).  At most one arc at an input
 **       vertex leaves the boundary (its other end has t > tol_t): one
 **       wavefront vertex starts there.  The others (any number) run at
 **       t ~ 0: an edge swept at t = 0 by the collinear rule is traced by an
@@ -536,7 +540,14 @@ static wk_status check_tree(wk_run *R, const wk_polygon *P, const wk_skeleton *S
         parent[rb] = ra;
         size[ra] += size[rb];
     }
-    if (st == WK_OK) {
+    /* Connected, except that a weighted skeleton of a polygon with holes
+    ** may have islands (faces.h): then each further component closes as many
+    ** cycles as it holds holes and the count above still holds per
+    ** component, but (e) must find each island as a loop inside one face.
+    ** With equal weights no wavefront overtakes a hole's, so no islands. */
+    bool equal_weights = true;
+    for (uint32_t i = 1; i < n && equal_weights; i++) equal_weights = P->w[i] == P->w[0];
+    if (st == WK_OK && (holes == 0 || equal_weights)) {
         uint32_t r0 = uf_find(parent, 0);
         for (uint32_t v = 1; v < N; v++)
             if (uf_find(parent, v) != r0) {
@@ -546,6 +557,17 @@ static wk_status check_tree(wk_run *R, const wk_polygon *P, const wk_skeleton *S
                              v, S->n_arcs, N, holes, N - 1 + holes);
                 break;
             }
+    }
+    if (st == WK_OK && holes > 0 && !equal_weights) {
+        /* cycles = arcs - nodes + components must be h; islands hold holes */
+        uint32_t components = 0;
+        for (uint32_t v = 0; v < N; v++) components += uf_find(parent, v) == v;
+        uint64_t cycles = (uint64_t)S->n_arcs + components - N;
+        if (cycles != holes)
+            st = WK_FAIL(R, WK_EINVALID, P->name, 0,
+                         "validate (d): %u arcs, %u nodes, %u components: %llu independent "
+                         "cycles, the polygon has %u holes",
+                         S->n_arcs, N, components, (unsigned long long)cycles, holes);
     }
 done:
     if (size) WK_FREE_ARRAY(R, size, N);
@@ -608,6 +630,7 @@ typedef struct face_ctx {
     const wk_point *pts;  /* the cycle's nodes in the xy plane */
     double tol;
     const wk_skeleton *S; /* for the nodes' times */
+    const uint8_t *bridge; /* bridge[i]: side i joins an island (faces.h); NULL: none */
 } face_ctx;
 
 /* "edge 3" for side 0 (the input edge), "arc 7 -> 9" for the others. */
@@ -636,6 +659,9 @@ static double overlap_length(wk_point a, wk_point b, wk_point c, wk_point d) {
 
 /* Test sides i and j of the face; adjacent sides may only share their node. */
 static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j) {
+    /* a bridge is no part of the skeleton: the two sides of one overlap by
+    ** construction, and the real sides are all tested among themselves */
+    if (F->bridge && (F->bridge[i] || F->bridge[j])) return WK_OK;
     wk_point a = F->pts[i], b = F->pts[next_of(i, F->L)];
     wk_point c = F->pts[j], d = F->pts[next_of(j, F->L)];
     if (fmax(a.x, b.x) < fmin(c.x, d.x) || fmax(c.x, d.x) < fmin(a.x, b.x) ||
@@ -747,7 +773,8 @@ static wk_status check_planar(wk_run *R, const wk_polygon *P, const wk_skeleton 
     if (!pts) return R->err.code;
     wk_status st = WK_OK;
     for (uint32_t e = 0; e < F->n && st == WK_OK; e++) {
-        face_ctx fc = {P, e, F->node + F->start[e], F->start[e + 1] - F->start[e], pts, tol, S};
+        face_ctx fc = {P, e, F->node + F->start[e], F->start[e + 1] - F->start[e], pts, tol, S,
+                       F->bridge ? F->bridge + F->start[e] : NULL};
         for (uint32_t i = 0; i < fc.L; i++)
             pts[i] = (wk_point){S->nodes[fc.cyc[i]].x, S->nodes[fc.cyc[i]].y};
         st = check_face_simple(R, &fc);

@@ -103,7 +103,8 @@ static void put_arcs(FILE *f, const wk_polygon *P, const wk_skeleton *S, bool re
 wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
                        const double *offsets, uint32_t n_offsets) {
     if (!offsets) n_offsets = 0;
-    wk_faces F = {0, NULL, NULL};
+    wk_faces F;
+    memset(&F, 0, sizeof F);
     cut *cuts = NULL;
     uint32_t maxlen = 0;
     if (wk_write_begin(R, P, S, "write svg: ") != WK_OK ||

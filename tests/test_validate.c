@@ -685,3 +685,53 @@ Test(validate, point_location_matches_brute_force, .timeout = 60) {
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
 }
+
+/* ---- islands (weighted skeletons of polygons with holes) ---- */
+
+/* tests/data/holes/weighted_islands.wpoly: edge 14 (weight 3) sweeps round
+** holes 2 and 4, whose faces are islands inside face 14.  The solved
+** skeleton is valid (3 components, face 14 bridged to two loops); dropping an
+** island's arc, or relabelling one, must be caught by the faces (e). */
+Test(validate, islands_valid_and_broken_ones_caught) {
+    wk_run R;
+    wk_run_init(&R);
+    char path[512];
+    data_path(path, sizeof path, "holes/weighted_islands.wpoly");
+    wk_polygon *P = NULL;
+    cr_assert_eq(wk_polygon_read_file(&R, path, &P), WK_OK, "%s", R.err.msg);
+    wk_skeleton *S = NULL;
+    cr_assert_eq(wk_solve(&R, wk_variant_reference(), P, &S, NULL, NULL), WK_OK, "%s", R.err.msg);
+    wk_validate_report rep;
+    expect_valid(&R, P, S, &rep);
+    wk_faces F;
+    cr_assert_eq(wk_faces_build(&R, P, S, &F, ""), WK_OK, "%s", R.err.msg);
+    cr_assert_not_null(F.bridge, "face 14 has islands: bridged");
+    uint32_t bridges = 0;
+    for (uint32_t e = 0; e < F.n; e++)
+        for (uint32_t i = F.start[e]; i < F.start[e + 1]; i++) bridges += F.bridge[i];
+    cr_assert_eq(bridges, 4, "two islands, two bridge sides each (got %u)", bridges);
+    wk_faces_clear(&R, &F);
+    /* an arc of the island around hole 2 (input vertices 16..19), removed */
+    uint32_t victim = WK_NONE;
+    for (uint32_t i = 0; i < S->n_arcs && victim == WK_NONE; i++)
+        if (S->arcs[i].a >= 16 && S->arcs[i].a <= 19) victim = i;
+    cr_assert_neq(victim, WK_NONE);
+    wk_arc keep = S->arcs[victim];
+    S->arcs[victim] = S->arcs[S->n_arcs - 1];
+    S->n_arcs--;
+    wk_status st = wk_validate(&R, P, S, 0, NULL);
+    cr_assert_eq(st, WK_EINVALID, "a missing island arc passed: %s", R.err.msg);
+    memset(&R.err, 0, sizeof R.err);
+    S->n_arcs++;
+    S->arcs[S->n_arcs - 1] = S->arcs[victim];
+    S->arcs[victim] = keep;
+    expect_valid(&R, P, S, &rep);
+    /* the same arc with its faces swapped */
+    S->arcs[victim].left = keep.right;
+    S->arcs[victim].right = keep.left;
+    expect_invalid(&R, P, S, 0, "validate", NULL);
+    S->arcs[victim] = keep;
+    wk_skeleton_free(&R, S);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
