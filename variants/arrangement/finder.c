@@ -478,6 +478,16 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
         st = create_segment(A, W, v, 0.0, &segs[i].hit, &si);
     }
     if (segs) WK_FREE_ARRAY(R, segs, r);
+    /* Reflex vertices the collinear rule made at t = 0 (ids >= n, or an
+    ** input vertex that became reflex) are in no segment of A(P), and no
+    ** group announces them: without a segment their pieces would never cut
+    ** the other segments (a missed split).  Their rays go against the
+    ** cycle, like those of vertices born later. */
+    for (uint32_t v = 0; st == WK_OK && v < wk_wf_vertex_count(W); v++) {
+        uint32_t si;
+        if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && A->seg_of[v] == WK_NONE)
+            st = create_segment(A, W, v, 0.0, NULL, &si);
+    }
     for (uint32_t si = 0; st == WK_OK && si < A->n_s; si++) st = arm_segment(A, W, si);
     return st;
 }
