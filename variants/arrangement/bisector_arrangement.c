@@ -55,6 +55,39 @@ static void reflex_motion(const wk_polygon *P, uint32_t v, wk_aseg *g) {
     g->speed = speed;
 }
 
+/* A ray that meets nothing: its origin, vertex v, lies within tol of an
+** edge other than its own two (a tiny edge next to v: v's neighbour across
+** it, and that neighbour's other edge, are within tol of v).  The shooter
+** sees every point within tol of the ray and ignores hits at t <= 0, so the
+** crossing right at the origin is lost.  The first boundary point is then v
+** itself up to tol: a hit on the nearest endpoint w of the closest such edge,
+** at distance max(0, projection of w), left ambiguous (a vertex hit) for the
+** finder's own shot.  False if no edge is that close (a genuine miss). */
+static bool hit_at_origin(const wk_polygon *P, double tol, uint32_t v, wk_point u, wk_ray_hit *h) {
+    uint32_t prev = v == 0 ? P->n - 1 : v - 1;
+    wk_point a = P->p[v];
+    double best = INFINITY;
+    uint32_t bw = WK_NONE;
+    for (uint32_t e = 0; e < P->n; e++) {
+        if (e == v || e == prev) continue;
+        uint32_t f = e + 1 == P->n ? 0 : e + 1;
+        wk_point p = P->p[e], q = P->p[f];
+        double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
+        double m = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
+        m = m < 0 ? 0 : m > 1 ? 1 : m;
+        double d = hypot(p.x + m * dx - a.x, p.y + m * dy - a.y);
+        if (d <= tol && d < best) {
+            best = d;
+            bw = hypot(p.x - a.x, p.y - a.y) <= hypot(q.x - a.x, q.y - a.y) ? e : f;
+        }
+    }
+    if (bw == WK_NONE) return false;
+    wk_point w = P->p[bw];
+    double t = (w.x - a.x) * u.x + (w.y - a.y) * u.y;
+    *h = (wk_ray_hit){t > 0 ? t : 0, w, WK_NONE, bw};
+    return true;
+}
+
 wk_status wk_arrangement_segments(wk_run *R, const wk_polygon *P, wk_aseg **out, uint32_t *r_out) {
     *out = NULL;
     *r_out = 0;
@@ -81,9 +114,12 @@ wk_status wk_arrangement_segments(wk_run *R, const wk_polygon *P, wk_aseg **out,
         g->a = P->p[g->vertex];
         wk_ray_hit h = {0, g->a, WK_NONE, WK_NONE};
         /* The brute force is a defensive fallback: the grid walk finds a
-        ** hit whenever one exists (ray_shoot.c), so it never runs. */
-        if (!wk_ray_shoot(&sh, g->a, g->u, g->vertex, &h))
-            (void)wk_ray_shoot_brute(P, sh.tol, g->a, g->u, g->vertex, &h);
+        ** hit whenever one exists (ray_shoot.c), so it never runs.  A ray
+        ** that meets nothing starts within tol of the boundary (a tiny edge
+        ** next to its vertex): hit_at_origin. */
+        if (!wk_ray_shoot(&sh, g->a, g->u, g->vertex, &h) &&
+            !wk_ray_shoot_brute(P, sh.tol, g->a, g->u, g->vertex, &h))
+            (void)hit_at_origin(P, sh.tol, g->vertex, g->u, &h);
         g->hit = h;
         g->b = h.p;
         g->len = h.t;

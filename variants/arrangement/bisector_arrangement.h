@@ -78,8 +78,11 @@ typedef struct wk_aseg {
 /* A(P): one segment per reflex vertex, in vertex order, shot in parallel
 ** with R->opt.threads OpenMP threads (identical result for any count).  On
 ** success *out (NULL when r = 0) is owned by the caller: free with
-** WK_FREE_ARRAY(R, *out, *r).  Fails with WK_ENOMEM, or WK_EALGO if a ray
-** meets no edge (never for a valid polygon); then *out = NULL, *r = 0. */
+** WK_FREE_ARRAY(R, *out, *r).  A ray that meets nothing because its vertex
+** lies within the shooter's tolerance of another edge (a tiny edge next to
+** it) gets a vertex hit at (about) its origin.  Fails with WK_ENOMEM, or
+** WK_EALGO if a ray meets no edge otherwise (never for a valid polygon);
+** then *out = NULL, *r = 0. */
 wk_status wk_arrangement_segments(wk_run *R, const wk_polygon *P, wk_aseg **out, uint32_t *r);
 
 /* Number of pairs of the r segments that cross properly (one common point,

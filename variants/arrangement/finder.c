@@ -422,9 +422,35 @@ static void brute_split(wk_wavefront *W, uint32_t v) {
     wk_wf_split_scan(W, v);
 }
 
-/* v's split: v meets F along its segment. */
+/* The pieces just beyond v's own two, tested with the reference's split
+** test: across a sub-tolerance edge v is within eps_d of its neighbour's
+** other piece, a contact the reference takes as a split right now and that
+** v's segment (a ray along v's motion) does not see.  The walk goes on past
+** each neighbour within WK_ARR_NEAR_SLACK * eps_d of v (tolerance.h).
+** O(1) unless v sits in a chain of such edges. */
+static void near_split(wk_wavefront *W, uint32_t v) {
+    double t = wk_wf_now(W), near = WK_ARR_NEAR_SLACK * wk_wf_eps_d(W);
+    wk_point pv = wk_wf_position(W, v, t);
+    wk_wf_split_search s;
+    wk_wf_split_begin(W, v, &s);
+    for (uint32_t a = wk_wf_next(W, v); a != v && wk_wf_next(W, a) != v; a = wk_wf_next(W, a)) {
+        wk_wf_split_test(W, &s, a);
+        wk_point pa = wk_wf_position(W, a, t);
+        if (!(hypot(pa.x - pv.x, pa.y - pv.y) <= near)) break;
+    }
+    for (uint32_t b = wk_wf_prev(W, v); b != v && wk_wf_prev(W, b) != v; b = wk_wf_prev(W, b)) {
+        wk_wf_split_test(W, &s, wk_wf_prev(W, b));
+        wk_point pb = wk_wf_position(W, b, t);
+        if (!(hypot(pb.x - pv.x, pb.y - pv.y) <= near)) break;
+    }
+    wk_wf_split_offer(W, &s);
+}
+
+/* v's split: v meets F along its segment; and any contact next to v
+** (near_split). */
 static void ar_full(void *ud, wk_wavefront *W, uint32_t v) {
     ar_state *A = ud;
+    near_split(W, v);
     if (v >= A->cap_v || A->seg_of[v] == WK_NONE) {
         brute_split(W, v); /* born in this group: its segment comes after it */
         return;
@@ -464,6 +490,16 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
         st = create_segment(A, W, v, 0.0, &segs[i].hit, &si);
     }
     if (segs) WK_FREE_ARRAY(R, segs, r);
+    /* Reflex vertices the collinear rule made at t = 0 (ids >= n, or an
+    ** input vertex that became reflex) are in no segment of A(P), and no
+    ** group announces them: without a segment their pieces would never cut
+    ** the other segments (a missed split).  Their rays go against the
+    ** cycle, like those of vertices born later. */
+    for (uint32_t v = 0; st == WK_OK && v < wk_wf_vertex_count(W); v++) {
+        uint32_t si;
+        if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && A->seg_of[v] == WK_NONE)
+            st = create_segment(A, W, v, 0.0, NULL, &si);
+    }
     for (uint32_t si = 0; st == WK_OK && si < A->n_s; si++) st = arm_segment(A, W, si);
     return st;
 }
