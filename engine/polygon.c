@@ -6,7 +6,8 @@
 ** wk_polygon_from_arrays, its one-ring case):
 **   - 3 <= n <= WK_POLYGON_MAX_N over 1 <= n_rings <= WK_POLYGON_MAX_RINGS
 **     rings of >= 3 vertices each; coordinates finite with magnitude at most
-**     WK_POLYGON_MAX_COORD; weights finite and > 0;
+**     WK_POLYGON_MAX_COORD, nonzero ones at least WK_POLYGON_MIN_COORD;
+**     weights finite and > 0;
 **   - each ring is simple: consecutive vertices differ, no other two
 **     vertices coincide, no edge meets a non-adjacent edge, adjacent edges
 **     meet only at their shared vertex (straight-on 180-degree vertices are
@@ -425,6 +426,13 @@ static wk_status check_values(wk_run *R, const wk_point *p, const double *w, uin
             return WK_FAIL(R, WK_EINPUT, name, line_of(lines, i),
                            "vertex %u: coordinate too large (%g, %g; the limit is %g)", i,
                            p[i].x, p[i].y, WK_POLYGON_MAX_COORD);
+        if ((p[i].x != 0 && fabs(p[i].x) < WK_POLYGON_MIN_COORD) ||
+            (p[i].y != 0 && fabs(p[i].y) < WK_POLYGON_MIN_COORD))
+            return WK_FAIL(R, WK_EINPUT, name, line_of(lines, i),
+                           "vertex %u: coordinate too small (%g, %g): nonzero coordinates must "
+                           "have magnitude at least %g (input domain: the exact predicates' "
+                           "products must not underflow; round it to 0 or scale the polygon)",
+                           i, p[i].x, p[i].y, WK_POLYGON_MIN_COORD);
     }
     if (w)
         for (uint32_t i = 0; i < n; i++) {

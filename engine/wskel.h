@@ -321,6 +321,13 @@ static inline void wk_count(wk_run *R, uint32_t counter, uint64_t n) {
 /* Largest coordinate magnitude accepted: keeps every product the exact
 ** predicates form far from overflow. */
 #define WK_POLYGON_MAX_COORD 1e150
+/* Smallest nonzero coordinate magnitude accepted: the exact predicates
+** (Shewchuk's) assume that no product underflows; a subnormal coordinate
+** such as 1.5e-323 next to coordinates of size 1 made them decide wrongly
+** (tests/data/bad/subnormal_vertex.wpoly, a fuzz finding: every variant's
+** skeleton failed validation).  1e-150 keeps products of two coordinates
+** above DBL_MIN. */
+#define WK_POLYGON_MIN_COORD 1e-150
 
 /* A polygon, possibly with holes: ring 0 is the outer boundary, rings 1..
 ** are holes.  Stored vertex ids run over the rings in order: ring k is

@@ -64,13 +64,13 @@ static void reflex_motion(const wk_polygon *P, uint32_t v, wk_aseg *g) {
 ** at distance max(0, projection of w), left ambiguous (a vertex hit) for the
 ** finder's own shot.  False if no edge is that close (a genuine miss). */
 static bool hit_at_origin(const wk_polygon *P, double tol, uint32_t v, wk_point u, wk_ray_hit *h) {
-    uint32_t prev = v == 0 ? P->n - 1 : v - 1;
+    uint32_t prev = wk_polygon_prev(P, v);
     wk_point a = P->p[v];
     double best = INFINITY;
     uint32_t bw = WK_NONE;
     for (uint32_t e = 0; e < P->n; e++) {
         if (e == v || e == prev) continue;
-        uint32_t f = e + 1 == P->n ? 0 : e + 1;
+        uint32_t f = wk_polygon_next(P, e);
         wk_point p = P->p[e], q = P->p[f];
         double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
         double m = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
