@@ -496,8 +496,9 @@ wk_status wk_mono_chain_build(mono *M, uint32_t c) {
     /* the initial wavefront: one vertex per interior chain vertex */
     for (uint32_t j = 1; j < C->m; j++) {
         uint32_t i = (C->first + j) % n;
-        uint32_t node = new_node(&S, P->p[i], 0.0, i);
-        uint32_t id = node == WK_NONE ? WK_NONE : new_trace(&S, (i + n - 1) % n, i, P->p[i], 0.0, node);
+        wk_point p = wk_mono_vertex(M, i);
+        uint32_t node = new_node(&S, p, 0.0, i);
+        uint32_t id = node == WK_NONE ? WK_NONE : new_trace(&S, (i + n - 1) % n, i, p, 0.0, node);
         if (id == WK_NONE) {
             st = R->err.code;
             goto done;

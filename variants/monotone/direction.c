@@ -120,16 +120,16 @@ static bool wall_or_back(wk_point p, wk_point q, double dx) {
 ** projections.  Sets the chain ends *vw, *ve, *is_strict (no chain edge is
 ** a wall or goes back, wall_or_back) and *viol (the largest distance a
 ** vertex lies behind) and returns true if so. */
-static bool check_direction(const wk_polygon *P, wk_point d, double tol, uint32_t *vw,
-                            uint32_t *ve, bool *is_strict, double *viol) {
-    uint32_t n = P->n;
+static bool check_direction(const mono *M, wk_point d, double tol, uint32_t *vw, uint32_t *ve,
+                            bool *is_strict, double *viol) {
+    uint32_t n = M->P->n;
     *viol = 0;
     uint32_t imin = 0, imax = 0;
     for (uint32_t i = 1; i < n; i++) {
-        if (proj(d, P->p[i]) < proj(d, P->p[imin])) imin = i;
-        if (proj(d, P->p[i]) > proj(d, P->p[imax])) imax = i;
+        if (proj(d, wk_mono_vertex(M, i)) < proj(d, wk_mono_vertex(M, imin))) imin = i;
+        if (proj(d, wk_mono_vertex(M, i)) > proj(d, wk_mono_vertex(M, imax))) imax = i;
     }
-    double xmin = proj(d, P->p[imin]), xmax = proj(d, P->p[imax]);
+    double xmin = proj(d, wk_mono_vertex(M, imin)), xmax = proj(d, wk_mono_vertex(M, imax));
     if (!(xmax - xmin > 2 * tol)) return false; /* a sliver: no verdict (*viol = 0) */
     /* v_w: the last vertex (counter-clockwise) of the plateau of equal
     ** projections at imin; v_e: the first of the one at imax.  Then the
@@ -137,9 +137,9 @@ static bool check_direction(const wk_polygon *P, wk_point d, double tol, uint32_
     ** turned in doubles lands in either chain, by its rounding: both are
     ** right within tol). */
     uint32_t a = imin, b = imax, guard = 0;
-    while (proj(d, P->p[(a + 1) % n]) == xmin && guard++ < n) a = (a + 1) % n;
+    while (proj(d, wk_mono_vertex(M, (a + 1) % n)) == xmin && guard++ < n) a = (a + 1) % n;
     guard = 0;
-    while (proj(d, P->p[(b + n - 1) % n]) == xmax && guard++ < n) b = (b + n - 1) % n;
+    while (proj(d, wk_mono_vertex(M, (b + n - 1) % n)) == xmax && guard++ < n) b = (b + n - 1) % n;
     if (a == b) return false;
     bool any_flat = false;
     /* lower chain a -> b: no vertex more than tol west of the running
@@ -147,14 +147,14 @@ static bool check_direction(const wk_polygon *P, wk_point d, double tol, uint32_
     ** minimum */
     double hi = xmin, lo = xmax;
     for (uint32_t i = a; i != b; i = (i + 1) % n) {
-        wk_point p = P->p[i], q = P->p[(i + 1) % n];
+        wk_point p = wk_mono_vertex(M, i), q = wk_mono_vertex(M, (i + 1) % n);
         double x1 = proj(d, q);
         if (hi - x1 > *viol) *viol = hi - x1;
         if (wall_or_back(p, q, x1 - proj(d, p))) any_flat = true;
         if (x1 > hi) hi = x1;
     }
     for (uint32_t i = b; i != a; i = (i + 1) % n) {
-        wk_point p = P->p[i], q = P->p[(i + 1) % n];
+        wk_point p = wk_mono_vertex(M, i), q = wk_mono_vertex(M, (i + 1) % n);
         double x1 = proj(d, q);
         if (x1 - lo > *viol) *viol = x1 - lo;
         if (wall_or_back(p, q, proj(d, p) - x1)) any_flat = true;
@@ -327,7 +327,7 @@ wk_status wk_mono_direction(mono *M) {
         uint32_t vw_, ve_;                                                      \
         bool strict_;                                                           \
         double v_;                                                              \
-        if (check_direction(P, d_, tol, &vw_, &ve_, &strict_, &v_)) {           \
+        if (check_direction(M, d_, tol, &vw_, &ve_, &strict_, &v_)) {           \
             if (strict_) {                                                      \
                 M->d = d_, M->vw = vw_, M->ve = ve_, M->strict = true;          \
                 goto done;                                                      \

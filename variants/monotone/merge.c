@@ -235,8 +235,8 @@ wk_status wk_mono_merge(mono *M) {
     W.M = M;
     uint32_t eu = (M->vw + n - 1) % n, eb = M->vw; /* the edges at v_w */
     uint32_t eu_end = M->ve, eb_end = (M->ve + n - 1) % n;
-    if (add_mnode(M, P->p[M->vw], 0.0, M->vw, &W.cur) != WK_OK) return R->err.code;
-    W.p = P->p[M->vw];
+    if (add_mnode(M, wk_mono_vertex(M, M->vw), 0.0, M->vw, &W.cur) != WK_OK) return R->err.code;
+    W.p = wk_mono_vertex(M, M->vw);
     uint64_t max_steps = 16 * (uint64_t)n + 64;
     for (uint64_t step = 0; step < max_steps; step++) {
         const wk_offset_line *Lu = &M->L[eu], *Lb = &M->L[eb];
@@ -267,10 +267,10 @@ wk_status wk_mono_merge(mono *M) {
         walk_face(&W, 1, eu, &best);
         walk_face(&W, 0, eb, &best);
         if (eu == eu_end && eb == eb_end) {
-            double lend = dot(sub(P->p[M->ve], W.p), dir);
+            double lend = dot(sub(wk_mono_vertex(M, M->ve), W.p), dir);
             if (lend <= best.lambda + M->eps_d) {
                 uint32_t m;
-                if (add_mnode(M, P->p[M->ve], 0.0, M->ve, &m) != WK_OK ||
+                if (add_mnode(M, wk_mono_vertex(M, M->ve), 0.0, M->ve, &m) != WK_OK ||
                     add_marc(M, W.cur, m, eu, eb) != WK_OK)
                     return R->err.code;
                 return WK_OK;
@@ -280,7 +280,7 @@ wk_status wk_mono_merge(mono *M) {
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: the merge chain leaves faces %u / %u nowhere (at %.17g, "
                            "%.17g)",
-                           eu, eb, W.p.x, W.p.y);
+                           eu, eb, W.p.x + M->o.x, W.p.y + M->o.y);
         /* the new merge vertex: where the offset lines of eu, eb and the
         ** crossed trace's other edge meet, if that agrees with the ray */
         wk_point X = {W.p.x + best.lambda * dir.x, W.p.y + best.lambda * dir.y};
@@ -302,7 +302,8 @@ wk_status wk_mono_merge(mono *M) {
         }
         if (W.n_excl == CLUSTER_MAX)
             return WK_FAIL(R, WK_EALGO, P->name, 0,
-                           "monotone: the merge chain circles at (%.17g, %.17g)", W.p.x, W.p.y);
+                           "monotone: the merge chain circles at (%.17g, %.17g)",
+                           W.p.x + M->o.x, W.p.y + M->o.y);
         W.excl_c[W.n_excl] = best.chain;
         W.excl_v[W.n_excl++] = best.trace;
         if (WK_GROW(R, M->cr, M->cap_cr, M->n_cr + 1) != WK_OK) return R->err.code;
