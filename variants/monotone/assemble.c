@@ -54,7 +54,9 @@ static bool on_side(const mono *M, uint32_t c, uint32_t m, wk_point D) {
     wk_point in = N->has_in ? N->in_dir : (wk_point){M->d.x, M->d.y};
     wk_point out = N->has_out ? N->out_dir : (wk_point){M->d.x, M->d.y};
     wk_point back = {-in.x, -in.y};
-    const double margin = 1e-9;
+    /* strictly: by more than the engine's parallel bar (an angle this small
+    ** is its sine), so a piece along M' is not on either side */
+    const double margin = WK_PARALLEL_SIN;
     if (c == 1) {
         double lim = ccw_angle(out, back), a = ccw_angle(out, D);
         return a > margin && a < lim - margin;
@@ -200,7 +202,7 @@ static wk_status sanity(mono *M, const wk_skeleton *S) {
     if (S->n_arcs + 1 != S->n_nodes)
         return WK_FAIL(M->R, WK_EALGO, P->name, 0,
                        "monotone: %u nodes but %u arcs (not a tree)", S->n_nodes, S->n_arcs);
-    double tol = 1e-6 * wk_polygon_scale(P);
+    double tol = WK_VALIDATE_TOL_REL * wk_polygon_scale(P); /* the validator's default */
     for (uint32_t i = 0; i < S->n_arcs; i++) {
         const wk_arc *a = &S->arcs[i];
         uint32_t f[2] = {a->left, a->right}, nd[2] = {a->a, a->b};

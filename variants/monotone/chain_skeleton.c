@@ -107,9 +107,9 @@ static uint32_t new_trace(sim *S, uint32_t ein, uint32_t eout, wk_point p, doubl
     x->alive = 1;
     x->ev_t = INFINITY;
     bool reflex;
-    /* snapped within 1e3 eps_d: see refine */
-    x->kind = (uint8_t)wk_vertex_start(L, ein, eout, p, t, 1e3 * S->M->eps_d, &x->p0, &x->vel,
-                                       &reflex);
+    /* snapped within WK_MONO_EXACT_SLACK eps_d: see refine */
+    x->kind = (uint8_t)wk_vertex_start(L, ein, eout, p, t, WK_MONO_EXACT_SLACK * S->M->eps_d,
+                                       &x->p0, &x->vel, &reflex);
     x->reflex = reflex;
     return id;
 }
@@ -149,11 +149,13 @@ static void refine(const sim *S, const mono_trace *V, uint32_t e1, uint32_t e2, 
     if (!wk_three_lines_meet(&M->L[e1], &M->L[e2], &M->L[e3], &q, &tq)) return;
     /* The kinematic estimate extrapolates positions since the vertex was
     ** born, so its error grows with the vertex's speed and age (vertices
-    ** between nearly parallel edges are fast); the window grows alike. */
+    ** between nearly parallel edges are fast); the window grows alike
+    ** (tolerance.h, "the monotone variant"). */
     double speed = fabs(V->vel.x) + fabs(V->vel.y);
     double age = *t - V->t0 > 0 ? *t - V->t0 : 0;
-    double wt = 16 * M->eps_t + 1e-4 * age;
-    double wd = 16 * M->eps_d * (1 + speed) + 1e-4 * age * (1 + speed);
+    double wt = WK_REFINE_TIME_SLACK * M->eps_t + WK_MONO_REFINE_AGE_REL * age;
+    double wd = WK_REFINE_DIST_SLACK * M->eps_d * (1 + speed) +
+                WK_MONO_REFINE_AGE_REL * age * (1 + speed);
     if (fabs(tq - *t) > wt || dist2(q, *p) > wd * wd) return;
     if (tq < S->t_now) tq = S->t_now;
     *t = tq;

@@ -27,7 +27,7 @@
 ** perpendicular to d (here: none within sine WK_PARALLEL_SIN of it, and none
 ** going back within tol).
 ** Candidates per run of the good set, widest run first: if the run is wider
-** than WIDE_ENOUGH, the middle of the widest gap, inside it, between
+** than WK_MONO_DIR_WIDE (tolerance.h), the middle of the widest gap, inside it, between
 ** directions perpendicular to any edge; the exact unit normals of the edges
 ** nearest in angle to the run's middle and ends (exactly an axis for an
 ** axis-parallel edge, so projections are exact there: combs, rectilinear
@@ -55,12 +55,6 @@
 #include <stdlib.h>
 
 #define PI 3.14159265358979323846
-
-/* A run of good directions narrower than this (radians) is tried only
-** through its edges' exact normals and its middle (a single direction up to
-** the tolerance): the widest gap between edge perpendiculars inside it would
-** be chosen by rounding.  Not a tolerance: check_direction decides. */
-#define WIDE_ENOUGH 1e-7
 
 typedef struct ang_ev {
     double a;   /* angle in [0, pi) */
@@ -226,7 +220,7 @@ wk_status wk_mono_direction(mono *M) {
         wk_point dm = {cos(mid), sin(mid)};
         double start = g1;
         wk_point us = u1, ue = u2; /* the offsets whose perpendiculars end the arc */
-        if (len < 1e-6 || len > PI - 1e-6) {
+        if (len < WK_MONO_DIR_FLAT_ARC || len > PI - WK_MONO_DIR_FLAT_ARC) {
             /* u1 and u2 (nearly) on one line: the midpoint test would be
             ** decided by rounding.  A nearly flat vertex (u1 . u2 < 0) is
             ** bad only for d nearly perpendicular to its edges: the long
@@ -350,7 +344,7 @@ wk_status wk_mono_direction(mono *M) {
         run_viol = INFINITY;                                                          \
     } while (0)
     double best_lo = runs[0].lo, best_hi = runs[0].hi;
-    if (best_hi - best_lo > WIDE_ENOUGH) {
+    if (best_hi - best_lo > WK_MONO_DIR_WIDE) {
         /* the widest gap between edge perpendiculars inside (lo, hi) */
         uint32_t k = 0;
         for (uint32_t e = 0; e < n; e++) {

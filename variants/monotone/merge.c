@@ -70,7 +70,7 @@ static double level(const wk_offset_line *L, wk_point q) {
 static bool coplanar(const mono *M, uint32_t a, uint32_t b) {
     const wk_offset_line *A = &M->L[a], *B = &M->L[b];
     double gx = A->nx / A->w - B->nx / B->w, gy = A->ny / A->w - B->ny / B->w;
-    if (fabs(gx) + fabs(gy) > 1e-12 * (1 / A->w + 1 / B->w)) return false;
+    if (fabs(gx) + fabs(gy) > WK_MONO_COPLANAR_REL * (1 / A->w + 1 / B->w)) return false;
     return fabs(A->c - B->c) <= M->eps_d;
 }
 
@@ -104,7 +104,7 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
     }
     double den = cross(D, W->dir);
     wk_point Ap = sub(A, W->p);
-    if (fabs(den) <= 1e-14 && fabs(cross(D, Ap)) <= M->eps_d) {
+    if (fabs(den) <= WK_MONO_RAY_PARALLEL_SIN && fabs(cross(D, Ap)) <= M->eps_d) {
         /* The ray runs along this trace.  If the face beyond is coplanar with
         ** the other chain's face, M' really continues between those two
         ** (the trace is where that coincidence starts): cross here. */
@@ -126,7 +126,8 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
         }
         return;
     }
-    if (left_wall ? den <= 1e-14 : den >= -1e-14) return; /* not outward */
+    if (left_wall ? den <= WK_MONO_RAY_PARALLEL_SIN : den >= -WK_MONO_RAY_PARALLEL_SIN)
+        return; /* not outward */
     double lambda = cross(D, Ap) / den;
     double mu = cross(W->dir, Ap) / den;
     if (lambda < -M->eps_d || mu < -M->eps_d || mu > len + M->eps_d) return;
@@ -155,7 +156,7 @@ static void walk_wall(const walk *W, uint32_t c, const uint32_t *w, uint32_t k, 
     const mono *M = W->M;
     const mono_chain *C = &M->ch[c];
     if (k == 0) return;
-    double tol = 1e3 * M->eps_t + 1e-12 * fabs(tau_p);
+    double tol = WK_MONO_LEVEL_SLACK * M->eps_t + WK_MONO_LEVEL_REL * fabs(tau_p);
     if (kappa >= 0) {
         /* first trace whose end level reaches tau_p - tol */
         uint32_t lo = 0, hi = k;
@@ -248,7 +249,7 @@ wk_status wk_mono_merge(mono *M) {
             dir = (wk_point){Lu->nx, Lu->ny};
             if (dot(dir, M->d) < 0) dir.x = -dir.x, dir.y = -dir.y;
             gl = 1;
-        } else if (!(gl > 1e-12 * (1 / Lu->w + 1 / Lb->w))) {
+        } else if (!(gl > WK_MONO_COPLANAR_REL * (1 / Lu->w + 1 / Lb->w))) {
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: edges %u and %u have no bisector", eu, eb);
         }
@@ -256,8 +257,10 @@ wk_status wk_mono_merge(mono *M) {
         /* dir = g rotated by +90 degrees keeps tau_u < tau_b (the upper
         ** face) on the left: east when M' is strictly monotone, and the
         ** right way along a wall pair perpendicular to the sweep (two walls
-        ** facing each other from different chains, non-strict case) */
-        if (dot(dir, M->d) < -1e-9)
+        ** facing each other from different chains, non-strict case; walls
+        ** are edges within sine WK_PARALLEL_SIN of the perpendicular to d,
+        ** direction.c, so M' between them may point that far west) */
+        if (dot(dir, M->d) < -WK_PARALLEL_SIN)
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: the merge chain turns west between edges %u and %u", eu, eb);
         W.dir = dir;
@@ -288,7 +291,7 @@ wk_status wk_mono_merge(mono *M) {
         wk_point q;
         double tq;
         if (wk_three_lines_meet(Lu, Lb, &M->L[best.face], &q, &tq) &&
-            hypot(q.x - X.x, q.y - X.y) <= 1e3 * M->eps_d && tq >= 0) {
+            hypot(q.x - X.x, q.y - X.y) <= WK_MONO_EXACT_SLACK * M->eps_d && tq >= 0) {
             X = q;
             t = tq;
         }
