@@ -193,31 +193,33 @@
 ** its edges' exact normals and its middle: inside it the widest gap between
 ** edge perpendiculars (the preferred candidate of a wide run) would be
 ** picked by the rounding of the angles (~1e-16 rad each, more for short
-** edges far from the origin: 1e-12 rad for an edge of 10 at 1e5, see
-** variants/monotone/README.md), and 1e-7 keeps every gap counted far above
+** edges far from the origin: 1e-12 rad for an edge of 10 at 1e5, see the
+** variant's README.md), and 1e-7 keeps every gap counted far above
 ** that.  Not the decision itself: check_direction decides on projections. */
 #define WK_MONO_DIR_WIDE 1e-7
 
-/* ------------------------------------------------- the monotone variant */
+/* ------------------------------------ chain skeletons and their merge */
 
-/* Chain skeletons (variants/monotone/chain_skeleton.c).  A new chain vertex
-** is snapped onto its two offset lines, and an edge collapse replaced by the
-** meeting point of its three offset lines, within these windows; M''s next
-** vertex (merge.c) is replaced by the meeting point of its three offset
-** lines within WK_MONO_EXACT_SLACK * eps_d as well.  A chain's events are
-** kinematic estimates extrapolated from each vertex's birth, and vertices
-** between nearly parallel edges are fast, so the estimate drifts with speed
-** and age far beyond naive's few eps_d: the exact construction is the same
-** event when it agrees in place and time, and taking it keeps later events
-** on the input lines.  WK_MONO_EXACT_SLACK (a multiple of eps_d): 1e3, the
-** validator's default tolerance (WK_VALIDATE_TOL_REL), so a snap never
-** moves a point by more than the validator would accept.  The collapse
-** window is WK_REFINE_TIME_SLACK * eps_t and WK_REFINE_DIST_SLACK * eps_d *
-** (1 + speed), as naive's, plus WK_MONO_REFINE_AGE_REL times the vertex's age
-** (time since its birth; times (1 + speed) for the distance): the drift of
-** the extrapolation.  Both chosen on convex n = 2000 seeds 4 and 6, where
-** they make monotone's nodes the exact ones (checked in 60-digit arithmetic)
-** while naive's drift by 4e-7 of the scale (README.md, "The cliff"). */
+/* Chain skeletons (chain_skeleton.c of the sweep variant).  A new chain
+** vertex is snapped onto its two offset lines, and an edge collapse replaced
+** by the meeting point of its three offset lines, within these windows; M''s
+** next vertex (merge.c) is replaced by the meeting point of its three
+** offset lines within WK_MONO_EXACT_SLACK * eps_d as well.  A chain's events
+** are kinematic estimates extrapolated from each vertex's birth, and
+** vertices between nearly parallel edges are fast, so the estimate drifts
+** with speed and age far beyond the reference wavefront's few eps_d: the
+** exact construction is the same event when it agrees in place and time,
+** and taking it keeps later events on the input lines.  WK_MONO_EXACT_SLACK
+** (a multiple of eps_d): 1e3, the validator's default tolerance
+** (WK_VALIDATE_TOL_REL), so a snap never moves a point by more than the
+** validator would accept.  The collapse window is WK_REFINE_TIME_SLACK *
+** eps_t and WK_REFINE_DIST_SLACK * eps_d * (1 + speed), as the wavefront's
+** refine, plus WK_MONO_REFINE_AGE_REL times the vertex's age (time since its
+** birth; times (1 + speed) for the distance): the drift of the
+** extrapolation.  Both chosen on convex n = 2000 seeds 4 and 6, where they
+** make the chain nodes the exact ones (checked in 60-digit arithmetic)
+** while the reference wavefront's drift by 4e-7 of the scale (the variant's
+** README.md, "The cliff"). */
 #define WK_MONO_EXACT_SLACK 1e3
 #define WK_MONO_REFINE_AGE_REL 1e-4
 /* The merge walk (merge.c).  Two roof planes are one (coplanar edges: M'

@@ -395,8 +395,8 @@ Test(monotone_cases, collinear_runs) {
                 wk_run R;
                 wk_run_init(&R);
                 char what[128];
-                snprintf(what, sizeof what, "square, sides split in %u, weight pattern %zu, rule %d",
-                         k, a, rule);
+                snprintf(what, sizeof what,
+                         "square, sides split in %u, weight pattern %zu, rule %d", k, a, rule);
                 wk_polygon *P = polygon_named(&R, n, x, y, w, what);
                 outcome o = solve_checked_rule(P, what, true, (wk_collinear_rule)rule);
                 cr_expect(o.compared, "%s: not compared", what);

@@ -150,7 +150,7 @@ static void refine(const sim *S, const mono_trace *V, uint32_t e1, uint32_t e2, 
     /* The kinematic estimate extrapolates positions since the vertex was
     ** born, so its error grows with the vertex's speed and age (vertices
     ** between nearly parallel edges are fast); the window grows alike
-    ** (tolerance.h, "the monotone variant"). */
+    ** (tolerance.h, "chain skeletons and their merge"). */
     double speed = fabs(V->vel.x) + fabs(V->vel.y);
     double age = *t - V->t0 > 0 ? *t - V->t0 : 0;
     double wt = WK_REFINE_TIME_SLACK * M->eps_t + WK_MONO_REFINE_AGE_REL * age;
