@@ -193,5 +193,71 @@
 ** eps_d = 1e-9 * scale unless the polygon lies ~1e6 of its own sizes from
 ** the origin. */
 #define WK_MONO_DIR_TOL 1.0
+/* Arcs of good directions (direction.c) whose length is within this many
+** radians of 0 or pi belong to a vertex whose neighbour offsets u1, u2 are
+** (nearly) on one line: there the test of the arc's middle against u1 and
+** u2 (products of projections ~ |u| sin(length / 2)) would be decided by the
+** rounding of atan2, cos and sin (~1e-16 rad), so the arc is chosen by the
+** sign of u1 . u2 instead (flat vertex or spike).  1e-6 is ten orders above
+** that rounding and far below any exterior angle the test has to tell. */
+#define WK_MONO_DIR_FLAT_ARC 1e-6
+/* A run of good directions narrower than this (radians) is tried only through
+** its edges' exact normals and its middle: inside it the widest gap between
+** edge perpendiculars (the preferred candidate of a wide run) would be
+** picked by the rounding of the angles (~1e-16 rad each, more for short
+** edges far from the origin: 1e-12 rad for an edge of 10 at 1e5, see the
+** variant's README.md), and 1e-7 keeps every gap counted far above
+** that.  Not the decision itself: check_direction decides on projections. */
+#define WK_MONO_DIR_WIDE 1e-7
+
+/* ------------------------------------ chain skeletons and their merge */
+
+/* Chain skeletons (chain_skeleton.c of the sweep variant).  A new chain
+** vertex is snapped onto its two offset lines, and an edge collapse replaced
+** by the meeting point of its three offset lines, within these windows; M''s
+** next vertex (merge.c) is replaced by the meeting point of its three
+** offset lines within WK_MONO_EXACT_SLACK * eps_d as well.  A chain's events
+** are kinematic estimates extrapolated from each vertex's birth, and
+** vertices between nearly parallel edges are fast, so the estimate drifts
+** with speed and age far beyond the reference wavefront's few eps_d: the
+** exact construction is the same event when it agrees in place and time,
+** and taking it keeps later events on the input lines.  WK_MONO_EXACT_SLACK
+** (a multiple of eps_d): 1e3, the validator's default tolerance
+** (WK_VALIDATE_TOL_REL), so a snap never moves a point by more than the
+** validator would accept.  The collapse window is WK_REFINE_TIME_SLACK *
+** eps_t and WK_REFINE_DIST_SLACK * eps_d * (1 + speed), as the wavefront's
+** refine, plus WK_MONO_REFINE_AGE_REL times the vertex's age (time since its
+** birth; times (1 + speed) for the distance): the drift of the
+** extrapolation.  Both chosen on convex n = 2000 seeds 4 and 6, where they
+** make the chain nodes the exact ones (checked in 60-digit arithmetic)
+** while the reference wavefront's drift by 4e-7 of the scale (the variant's
+** README.md, "The cliff"). */
+#define WK_MONO_EXACT_SLACK 1e3
+#define WK_MONO_REFINE_AGE_REL 1e-4
+/* The merge walk (merge.c).  Two roof planes are one (coplanar edges: M'
+** follows the vertex between them), or have no bisector, when their
+** gradients n / w differ by at most WK_MONO_COPLANAR_REL * (1 / w_a + 1 / w_b)
+** (in the L1 norm for the first test, the L2 norm for the second): the
+** gradients are unit normals over weights, equal up to the rounding of the
+** normals (~1e-16, up to 1e-12 rad for short edges turned in doubles far
+** from the origin, README.md): 1e-12 allows that rounding and no more (the
+** bar of WK_ANTIPARALLEL_SIN; WK_PARALLEL_SIN, 1e-9, would make the roofs
+** of edges up to 1e-9 rad apart one plane). */
+#define WK_MONO_COPLANAR_REL 1e-12
+/* M''s ray runs along a wall trace (their unit directions' cross product is
+** at most this) or, for a crossing, must leave the face by more than this:
+** both unit vectors come from differences of constructed points, rounded to
+** ~1e-16, and 1e-14 (100 times that) takes only the rounding as parallel;
+** along a trace, the eps_d distance test then decides. */
+#define WK_MONO_RAY_PARALLEL_SIN 1e-14
+/* A wall is entered at the current level tau_p by binary search over its
+** traces' times, with a window of WK_MONO_LEVEL_SLACK * eps_t +
+** WK_MONO_LEVEL_REL * |tau_p|: levels are computed from points ((n . q -
+** c) / w: rounding relative to tau_p, times the conditioning) and node times
+** from events (within a few eps_t).  Loose on purpose: a wider window only
+** costs a few more traces looked at, a narrower one would skip the trace the
+** ray leaves through. */
+#define WK_MONO_LEVEL_SLACK 1e3
+#define WK_MONO_LEVEL_REL 1e-12
 
 #endif

@@ -17,7 +17,17 @@
 **   - the cliff family (random x-monotone, about n/2 reflex vertices, x in
 **     [0, 50 n], |y| < 10 n, turned by 0.3 rad) at n = 20,000: solved by
 **     001's path, reference_fallbacks == 0 (a counter, not a time), valid;
-**     and at n = 2,000 equal to naive.
+**     and at n = 2,000 equal to naive;
+**   - collinear runs: squares whose sides are split into runs of three and
+**     more weights (the stress sweep's collinear_mixed class): 001's path,
+**     equal to naive under both collinear rules (each swept piece's face is
+**     the winner that extends over it, as naive's wf_collinear_rule says);
+**   - far from the origin: convex polygons of diagonal 1 at (849367,
+**     527803) and combs of size 1e-3 at (1e6, -2e6), turned: equal to
+**     naive, and the combs not refused (the variant computes relative to
+**     the bounding-box centre; computed in absolute coordinates, 8 of these
+**     10 convex polygons differed from naive and 5 of the 10 combs were
+**     refused).
 ** Every case owns fresh wk_runs and closes them with no live bytes.
 */
 #define _POSIX_C_SOURCE 200809L
@@ -152,11 +162,13 @@ typedef struct outcome {
 ** wk_validate and, if compare, equal naive's skeleton (tests/helpers.h:
 ** same_skeleton, merging within 1e-7 of the scale, as
 ** scripts/compare_skeletons.py). */
-static outcome solve_checked(const wk_polygon *P, const char *what, bool compare) {
+static outcome solve_checked_rule(const wk_polygon *P, const char *what, bool compare,
+                                  wk_collinear_rule rule) {
     outcome o = {WK_OK, 0, false};
     wk_run R, Rn;
     wk_run_init(&R);
     wk_run_init(&Rn);
+    R.opt.collinear = Rn.opt.collinear = rule;
     wk_skeleton *A = NULL, *B = NULL;
     char msg[1024], why[512] = "";
     o.st = wk_solve(&R, variant("monotone"), P, &A, NULL, NULL);
@@ -186,6 +198,10 @@ static outcome solve_checked(const wk_polygon *P, const char *what, bool compare
     ASSERT_CLEAN_CLOSE(R);
     ASSERT_CLEAN_CLOSE(Rn);
     return o;
+}
+
+static outcome solve_checked(const wk_polygon *P, const char *what, bool compare) {
+    return solve_checked_rule(P, what, compare, WK_COLLINEAR_LOWER);
 }
 
 static void expect_refused(const wk_polygon *P, const char *what) {
@@ -337,6 +353,154 @@ Test(monotone_cases, non_monotone_refused) {
     expect_refused(P, "notched triangle");
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
+}
+
+/* ------------------------------------------------------- collinear runs */
+
+/* A square of side 12 k (k pieces per side), each side split into k equal
+** collinear edges with the weights pat[(side + j) % m], j = 0..k-1. */
+static uint32_t split_square(uint32_t k, const double *pat, uint32_t m, double *x, double *y,
+                             double *w) {
+    static const double cx[4] = {0, 1, 1, 0}, cy[4] = {0, 0, 1, 1};
+    double L = 12.0 * k;
+    uint32_t n = 0;
+    for (uint32_t s = 0; s < 4; s++) {
+        double ax = L * cx[s], ay = L * cy[s], bx = L * cx[(s + 1) % 4], by = L * cy[(s + 1) % 4];
+        for (uint32_t j = 0; j < k; j++, n++) {
+            x[n] = ax + (bx - ax) * j / k;
+            y[n] = ay + (by - ay) * j / k;
+            w[n] = pat[(s + j) % m];
+        }
+    }
+    return n;
+}
+
+/* Runs of three and more weights meet at t = 0: before, each pair of
+** pieces was resolved alone, so a swept piece could be labelled with its
+** losing neighbour (stress case s1-c00274: sides of weights 100, 10, 1 gave
+** an arc with faces 6 | 5 where naive has 7 | 5) and swept pieces left
+** overlapping flat traces. */
+Test(monotone_cases, collinear_runs) {
+    static const double pats[][5] = {
+        {100, 10, 1}, {1, 10, 100}, {10, 1, 100}, {10, 1, 10, 1}, {2, 1, 2}, {1, 2, 3, 2, 1},
+        {3, 1, 2, 1, 3},
+    };
+    static const uint32_t lens[] = {3, 3, 3, 4, 3, 5, 5};
+    uint32_t cases = 0;
+    for (size_t a = 0; a < sizeof lens / sizeof lens[0]; a++)
+        for (uint32_t k = 2; k <= 6; k++)
+            for (int rule = 0; rule < 2; rule++) {
+                double x[32], y[32], w[32];
+                uint32_t n = split_square(k, pats[a], lens[a], x, y, w);
+                wk_run R;
+                wk_run_init(&R);
+                char what[128];
+                snprintf(what, sizeof what,
+                         "square, sides split in %u, weight pattern %zu, rule %d", k, a, rule);
+                wk_polygon *P = polygon_named(&R, n, x, y, w, what);
+                outcome o = solve_checked_rule(P, what, true, (wk_collinear_rule)rule);
+                cr_expect(o.compared, "%s: not compared", what);
+                cr_expect_eq(o.fallbacks, 0, "%s: went to the reference wavefront", what);
+                cases++;
+                wk_polygon_free(&R, P);
+                ASSERT_CLEAN_CLOSE(R);
+            }
+    /* the stress case itself */
+    static const double sx[10] = {0, 6, 12, 12, 12, 12, 8, 4, 0, 0};
+    static const double sy[10] = {0, 0, 0, 4, 8, 12, 12, 12, 12, 6};
+    static const double sw[10] = {1, 10, 1, 100, 1, 100, 10, 1, 10, 10};
+    for (int rule = 0; rule < 2; rule++) {
+        wk_run R;
+        wk_run_init(&R);
+        wk_polygon *P = polygon_named(&R, 10, sx, sy, sw, "stress case s1-c00274");
+        outcome o = solve_checked_rule(P, "stress case s1-c00274", true, (wk_collinear_rule)rule);
+        cr_expect(o.compared && o.fallbacks == 0, "s1-c00274, rule %d: not by 001's path", rule);
+        wk_polygon_free(&R, P);
+        ASSERT_CLEAN_CLOSE(R);
+    }
+    fprintf(stderr, "monotone_cases collinear runs: %u squares by 001's path, equal to naive\n",
+            cases);
+}
+
+/* ------------------------------------------------- far from the origin */
+
+/* G scaled to diagonal `size` with its lower left corner at `at`, then
+** turned by th about `at`, rounded as the stress sweep's far class does
+** (tests/stress/makers.py: fit, then rotate): the scaled coordinates are
+** rounded at `at` first, the differences from `at` are exact, and the turned
+** point is summed left to right.  Rounded otherwise (the turn added to `at`
+** in one sum), the combs are monotone in no direction in doubles: their
+** walls lean by up to ulp(2e6) = 4.7e-10 over a size of 1e-3, and a
+** refusal is then right. */
+static void fit_turn(const wk_polygon *G, double size, wk_point at, double th, double *x,
+                     double *y) {
+    wk_point lo, hi;
+    wk_polygon_bbox(G, &lo, &hi);
+    double k = size / hypot(hi.x - lo.x, hi.y - lo.y), c = cos(th), s = sin(th);
+    for (uint32_t i = 0; i < G->n; i++) {
+        double u = (at.x + (G->p[i].x - lo.x) * k) - at.x;
+        double v = (at.y + (G->p[i].y - lo.y) * k) - at.y;
+        x[i] = at.x + c * u - s * v; /* left to right, as makers.rotate */
+        y[i] = at.y + s * u + c * v;
+    }
+}
+
+/* Both variants through wk_solve_checked, as bin/wskel runs them: the
+** reference (naive, and monotone's fallback) needs its tolerance escalation
+** on some of these combs (comb seed 6: a fold at the first tolerance).
+** Monotone must not refuse, and must give naive's skeleton. */
+static void solve_far(const wk_polygon *P, const char *what) {
+    wk_run R, Rn;
+    wk_run_init(&R);
+    wk_run_init(&Rn);
+    wk_skeleton *A = NULL, *B = NULL;
+    char msg[1024], why[512] = "";
+    wk_status st = wk_solve_checked(&R, variant("monotone"), P, 0, &A, NULL, NULL, NULL);
+    err_text(&R, msg, sizeof msg);
+    cr_expect_eq(st, WK_OK, "%s: monotone gave %s: %s", what, wk_status_name(st), msg);
+    wk_status ns = wk_solve_checked(&Rn, variant("naive"), P, 0, &B, NULL, NULL, NULL);
+    err_text(&Rn, msg, sizeof msg);
+    cr_expect_eq(ns, WK_OK, "%s: naive gave %s: %s", what, wk_status_name(ns), msg);
+    if (st == WK_OK && ns == WK_OK) {
+        double tol = 1e-7 * wk_polygon_scale(P);
+        sk_match mm = {.tol = tol, .tol_t = tol / max_weight(P), .merge = true};
+        cr_expect(same_skeleton(A, B, mm, why, sizeof why), "%s: differs from naive: %s", what,
+                  why);
+    }
+    if (A) wk_skeleton_free(&R, A);
+    if (B) wk_skeleton_free(&Rn, B);
+    ASSERT_CLEAN_CLOSE(R);
+    ASSERT_CLEAN_CLOSE(Rn);
+}
+
+Test(monotone_cases, far_from_origin) {
+    static const struct {
+        const char *family;
+        uint32_t n, seeds;
+        double size, th;
+        wk_point at;
+    } fam[] = {
+        {"convex", 93, 10, 1.0, 0.78539816339744828, {849367, 527803}},
+        {"comb", 24, 10, 1e-3, 4.2868715156472117, {1e6, -2e6}},
+    };
+    for (size_t f = 0; f < sizeof fam / sizeof fam[0]; f++)
+        for (uint64_t seed = 1; seed <= fam[f].seeds; seed++) {
+            wk_run R;
+            wk_run_init(&R);
+            wk_polygon *G = gen_polygon(&R, fam[f].family, fam[f].n, seed, "unit");
+            double x[128], y[128];
+            cr_assert_leq(G->n, 128);
+            fit_turn(G, fam[f].size, fam[f].at, fam[f].th, x, y);
+            char what[160];
+            snprintf(what, sizeof what, "%s n=%u seed=%llu, diagonal %g at (%g, %g), turned %g",
+                     fam[f].family, fam[f].n, (unsigned long long)seed, fam[f].size,
+                     fam[f].at.x, fam[f].at.y, fam[f].th);
+            wk_polygon *P = polygon_named(&R, G->n, x, y, NULL, what);
+            solve_far(P, what);
+            wk_polygon_free(&R, P);
+            wk_polygon_free(&R, G);
+            ASSERT_CLEAN_CLOSE(R);
+        }
 }
 
 /* ------------------------------------------------------------- the cliff */

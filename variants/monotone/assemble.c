@@ -54,7 +54,9 @@ static bool on_side(const mono *M, uint32_t c, uint32_t m, wk_point D) {
     wk_point in = N->has_in ? N->in_dir : (wk_point){M->d.x, M->d.y};
     wk_point out = N->has_out ? N->out_dir : (wk_point){M->d.x, M->d.y};
     wk_point back = {-in.x, -in.y};
-    const double margin = 1e-9;
+    /* strictly: by more than the engine's parallel bar (an angle this small
+    ** is its sine), so a piece along M' is not on either side */
+    const double margin = WK_PARALLEL_SIN;
     if (c == 1) {
         double lim = ccw_angle(out, back), a = ccw_angle(out, D);
         return a > margin && a < lim - margin;
@@ -80,7 +82,8 @@ static uint32_t chain_node_sk(asm_ctx *A, uint32_t c, uint32_t node) {
             A->sk[c][node] = N->input;
         } else {
             uint32_t id;
-            if (wk_skeleton_add_node(M->R, A->S, N->p.x, N->p.y, N->t, &id) != WK_OK)
+            if (wk_skeleton_add_node(M->R, A->S, N->p.x + M->o.x, N->p.y + M->o.y, N->t, &id) !=
+                WK_OK)
                 return WK_NONE;
             A->sk[c][node] = id;
         }
@@ -161,7 +164,7 @@ static wk_status clip_chain(asm_ctx *A, uint32_t c, uint32_t *ci) {
                                "polygon near (%.17g, %.17g): a part of chain %u that the "
                                "polygon's wavefront loses reaches the merge chain (001's "
                                "merge assumes it cannot)",
-                               M->mn[m].p.x, M->mn[m].p.y, c);
+                               M->mn[m].p.x + M->o.x, M->mn[m].p.y + M->o.y, c);
             /* Past a crossing inside the trace the trace is on the other side
             ** of M': M' crossed it there (it left one of the trace's faces
             ** for the other, and each face lies on one side of the trace),
@@ -199,7 +202,7 @@ static wk_status sanity(mono *M, const wk_skeleton *S) {
     if (S->n_arcs + 1 != S->n_nodes)
         return WK_FAIL(M->R, WK_EALGO, P->name, 0,
                        "monotone: %u nodes but %u arcs (not a tree)", S->n_nodes, S->n_arcs);
-    double tol = 1e-6 * wk_polygon_scale(P);
+    double tol = WK_VALIDATE_TOL_REL * wk_polygon_scale(P); /* the validator's default */
     for (uint32_t i = 0; i < S->n_arcs; i++) {
         const wk_arc *a = &S->arcs[i];
         uint32_t f[2] = {a->left, a->right}, nd[2] = {a->a, a->b};
@@ -207,7 +210,8 @@ static wk_status sanity(mono *M, const wk_skeleton *S) {
             for (int k = 0; k < 2; k++) {
                 const wk_offset_line *L = &M->L[f[j]];
                 const wk_node *q = &S->nodes[nd[k]];
-                double err = L->nx * q->x + L->ny * q->y - L->c - L->w * q->t;
+                double err =
+                    L->nx * (q->x - M->o.x) + L->ny * (q->y - M->o.y) - L->c - L->w * q->t;
                 if (!(fabs(err) <= tol))
                     return WK_FAIL(M->R, WK_EALGO, P->name, 0,
                                    "monotone: arc %u (%u -> %u) is off face %u by %.3g at node %u",
@@ -244,7 +248,9 @@ wk_status wk_mono_assemble(mono *M, wk_skeleton **out) {
     for (uint32_t i = 0; i < M->n_mn; i++) {
         mono_mnode *N = &M->mn[i];
         if (N->sk != WK_NONE) continue;
-        if ((st = wk_skeleton_add_node(R, A.S, N->p.x, N->p.y, N->t, &N->sk)) != WK_OK) goto done;
+        if ((st = wk_skeleton_add_node(R, A.S, N->p.x + M->o.x, N->p.y + M->o.y, N->t, &N->sk)) !=
+            WK_OK)
+            goto done;
     }
     /* crossings at a trace's ends put M' through that chain node */
     for (uint32_t i = 0; i < M->n_cr; i++) {

@@ -42,6 +42,10 @@ typedef struct sim {
     mono_chain *C;
     wk_event_queue Q;
     double t_now;
+    /* scratch of collinear_rule: the run's vertices, pieces, nodes and the
+    ** vertices to schedule afterwards */
+    uint32_t *run_v, *run_e, *run_nd, *run_sched;
+    uint32_t cap_run_v, cap_run_e, cap_run_nd, cap_run_sched;
 } sim;
 
 uint32_t wk_mono_chain_local(const mono *M, const mono_chain *C, uint32_t e) {
@@ -103,9 +107,9 @@ static uint32_t new_trace(sim *S, uint32_t ein, uint32_t eout, wk_point p, doubl
     x->alive = 1;
     x->ev_t = INFINITY;
     bool reflex;
-    /* snapped within 1e3 eps_d: see refine */
-    x->kind = (uint8_t)wk_vertex_start(L, ein, eout, p, t, 1e3 * S->M->eps_d, &x->p0, &x->vel,
-                                       &reflex);
+    /* snapped within WK_MONO_EXACT_SLACK eps_d: see refine */
+    x->kind = (uint8_t)wk_vertex_start(L, ein, eout, p, t, WK_MONO_EXACT_SLACK * S->M->eps_d,
+                                       &x->p0, &x->vel, &reflex);
     x->reflex = reflex;
     return id;
 }
@@ -145,11 +149,13 @@ static void refine(const sim *S, const mono_trace *V, uint32_t e1, uint32_t e2, 
     if (!wk_three_lines_meet(&M->L[e1], &M->L[e2], &M->L[e3], &q, &tq)) return;
     /* The kinematic estimate extrapolates positions since the vertex was
     ** born, so its error grows with the vertex's speed and age (vertices
-    ** between nearly parallel edges are fast); the window grows alike. */
+    ** between nearly parallel edges are fast); the window grows alike
+    ** (tolerance.h, "chain skeletons and their merge"). */
     double speed = fabs(V->vel.x) + fabs(V->vel.y);
     double age = *t - V->t0 > 0 ? *t - V->t0 : 0;
-    double wt = 16 * M->eps_t + 1e-4 * age;
-    double wd = 16 * M->eps_d * (1 + speed) + 1e-4 * age * (1 + speed);
+    double wt = WK_REFINE_TIME_SLACK * M->eps_t + WK_MONO_REFINE_AGE_REL * age;
+    double wd = WK_REFINE_DIST_SLACK * M->eps_d * (1 + speed) +
+                WK_MONO_REFINE_AGE_REL * age * (1 + speed);
     if (fabs(tq - *t) > wt || dist2(q, *p) > wd * wd) return;
     if (tq < S->t_now) tq = S->t_now;
     *t = tq;
@@ -201,6 +207,166 @@ static void link(sim *S, uint32_t a, uint32_t b) {
     if (b != WK_NONE) S->C->v[b].prev = a;
 }
 
+/* A live vertex between two parallel pieces of the same sense (collinear or
+** straight): it lies inside a run of pieces on one line. */
+static bool on_one_line(const mono_trace *v) {
+    return v->alive && (v->kind == WK_VEL_COLLINEAR || v->kind == WK_VEL_STRAIGHT);
+}
+
+/* The node where run vertex i is at time t, made once (as naive's run_node):
+** its own start node if it was born now, else a new node at its place. */
+static uint32_t run_node(sim *S, uint32_t i, double t) {
+    if (S->run_nd[i] == WK_NONE) {
+        const mono_trace *U = &S->C->v[S->run_v[i]];
+        S->run_nd[i] = U->t0 == t ? U->start : new_node(S, wk_mono_trace_at(U, t), t, WK_NONE);
+    }
+    return S->run_nd[i];
+}
+
+/* The collinear rule at node `node` (time t), where a vertex between
+** parallel edges ein and eout of different weight would be born (P before
+** it, Q after it).  As the reference's wf_collinear_rule, so that the
+** skeletons agree: take the maximal run of pieces on that line (through live
+** straight or collinear vertices on both sides, not just the pair: three or
+** more weights can meet at once); the winning weight (lowest by default,
+** highest with --collinear higher) survives, every other piece is swept at
+** once, leaving a flat trace along it between its face and the winning
+** piece that extends over it (the last winner before it, else the first
+** winner).  Flats towards a winner after them run backwards along their
+** edge (the winner's face on their right: its left wall), the others
+** forwards (its right wall), each wall in order away from the winner.  The
+** run's vertices next to a swept piece end; new vertices join the winners
+** to their neighbours.  A run that reaches a chain end is a ray there: its
+** swept end pieces leave infinite flats, and a winner becomes the ray. */
+static wk_status collinear_rule(sim *S, uint32_t node, uint32_t P, uint32_t Q, uint32_t ein,
+                                uint32_t eout, double t) {
+    mono *M = S->M;
+    wk_run *R = M->R;
+    mono_chain *C = S->C;
+    const wk_offset_line *L = M->L;
+    /* run vertices 0..k (0 and k: the vertices before and after the run,
+    ** WK_NONE at a ray; vc: the vertex being born at `node`), pieces
+    ** 0..k-1, piece j between vertices j and j + 1 */
+    uint32_t nb = 0, na = 0, x;
+    for (x = P; x != WK_NONE && on_one_line(&C->v[x]); x = C->v[x].prev)
+        if (++nb > C->nv) goto cyclic;
+    uint32_t first = x;
+    for (x = Q; x != WK_NONE && on_one_line(&C->v[x]); x = C->v[x].next)
+        if (++na > C->nv) goto cyclic;
+    uint32_t last = x, k = nb + na + 2, vc = nb + 1;
+    if (WK_GROW(R, S->run_v, S->cap_run_v, k + 1) != WK_OK ||
+        WK_GROW(R, S->run_e, S->cap_run_e, k) != WK_OK ||
+        WK_GROW(R, S->run_nd, S->cap_run_nd, k + 1) != WK_OK ||
+        WK_GROW(R, S->run_sched, S->cap_run_sched, k + 3) != WK_OK)
+        return R->err.code;
+    uint32_t *V = S->run_v, *E = S->run_e, *ND = S->run_nd, *SCH = S->run_sched, n_sch = 0;
+    V[0] = first;
+    V[k] = last;
+    V[vc] = WK_NONE;
+    E[nb] = ein;
+    E[vc] = eout;
+    x = P;
+    for (uint32_t j = nb; j >= 1; j--, x = C->v[x].prev) {
+        V[j] = x;
+        E[j - 1] = C->v[x].ein;
+    }
+    x = Q;
+    for (uint32_t j = vc + 1; j < k; j++, x = C->v[x].next) {
+        V[j] = x;
+        E[j] = C->v[x].eout;
+    }
+    for (uint32_t j = 0; j <= k; j++) ND[j] = WK_NONE;
+    ND[vc] = node;
+    bool lower = R->opt.collinear == WK_COLLINEAR_LOWER;
+    double best = L[E[0]].w;
+    for (uint32_t j = 1; j < k; j++)
+        if (lower ? L[E[j]].w < best : L[E[j]].w > best) best = L[E[j]].w;
+    uint32_t fw = 0;
+    while (L[E[fw]].w != best) fw++;
+    wk_point at = C->node[node].p;
+    /* flats along the losing pieces: before the first winner backwards,
+    ** then the others forwards */
+    for (uint32_t j = fw; j-- > 0;) {
+        uint32_t a = run_node(S, j + 1, t), b = WK_NONE;
+        if (a == WK_NONE) return R->err.code;
+        if (!(j == 0 && first == WK_NONE) && (b = run_node(S, j, t)) == WK_NONE) return R->err.code;
+        wk_point u = {-L[E[j]].ux, -L[E[j]].uy};
+        if (new_flat(S, E[j], E[fw], a, b, u, t) == WK_NONE) return R->err.code;
+        wk_event e = {t, at.x, at.y, E[j], E[fw], WK_NONE};
+        wk_notify_event(R, WK_COUNTER_collinear_resolutions, &e);
+    }
+    uint32_t ext = E[fw];
+    for (uint32_t j = fw + 1; j < k; j++) {
+        if (L[E[j]].w == best) {
+            ext = E[j];
+            continue;
+        }
+        uint32_t a = run_node(S, j, t), b = WK_NONE;
+        if (a == WK_NONE) return R->err.code;
+        if (!(j + 1 == k && last == WK_NONE) && (b = run_node(S, j + 1, t)) == WK_NONE)
+            return R->err.code;
+        wk_point u = {L[E[j]].ux, L[E[j]].uy};
+        if (new_flat(S, ext, E[j], a, b, u, t) == WK_NONE) return R->err.code;
+        wk_event e = {t, at.x, at.y, E[j], ext, WK_NONE};
+        wk_notify_event(R, WK_COUNTER_collinear_resolutions, &e);
+    }
+    /* the new wavefront along the run (naive's rebuild): cur is its last
+    ** vertex so far (WK_NONE: none yet, the chain starts with a ray), cur_out
+    ** the edge leaving it */
+    uint32_t cur = WK_NONE, cur_out = E[fw];
+    if (first != WK_NONE) {
+        cur = C->v[first].prev;
+        cur_out = C->v[first].ein;
+    }
+    if (cur != WK_NONE) SCH[n_sch++] = cur;
+    for (uint32_t i = first == WK_NONE ? 1 : 0; i <= k; i++) {
+        if (i == k && last == WK_NONE) {
+            link(S, cur, WK_NONE);
+            break;
+        }
+        uint32_t u = V[i];
+        uint32_t e_in = i == 0 ? C->v[u].ein : E[i - 1];
+        uint32_t e_out = i == k ? C->v[u].eout : E[i];
+        bool lost_before = i > 0 && L[E[i - 1]].w != best;
+        bool lost_after = i < k && L[E[i]].w != best;
+        if (!lost_before && !lost_after) { /* untouched (never the new vertex) */
+            link(S, cur, u);
+            cur = u;
+            cur_out = C->v[u].eout;
+            SCH[n_sch++] = u;
+            continue;
+        }
+        uint32_t nd = i == vc ? node : run_node(S, i, t);
+        if (nd == WK_NONE) return R->err.code;
+        uint32_t u_next = u != WK_NONE ? C->v[u].next : WK_NONE;
+        if (u != WK_NONE) terminate(S, u, nd);
+        uint32_t leave = i == k ? e_out : (lost_after ? cur_out : e_out);
+        if (i == 0) leave = E[fw];
+        if (lost_after && i > 0 && i < k && L[e_in].w == best) leave = e_in;
+        if (i < k && !lost_after) leave = e_out;
+        if (leave != cur_out) {
+            uint32_t g = new_trace(S, cur_out, leave, C->node[nd].p, t, nd);
+            if (g == WK_NONE) return R->err.code;
+            if (C->v[g].kind != WK_VEL_REGULAR && C->v[g].kind != WK_VEL_STRAIGHT)
+                return WK_FAIL(R, WK_EALGO, M->P->name, 0,
+                               "monotone: the collinear rule at t = %.17g leaves edges %u and %u "
+                               "meeting in parallel",
+                               t, cur_out, leave);
+            link(S, cur, g);
+            cur = g;
+            cur_out = leave;
+            SCH[n_sch++] = g;
+        }
+        if (i == k) link(S, cur, u_next);
+    }
+    for (uint32_t j = 0; j < n_sch; j++)
+        if (C->v[SCH[j]].alive && schedule(S, SCH[j]) != WK_OK) return R->err.code;
+    return WK_OK;
+cyclic:
+    return WK_FAIL(R, WK_EALGO, M->P->name, 0,
+                   "monotone: a chain's whole wavefront lies on one line at t = %.17g", t);
+}
+
 /* Resolve the wavefront at node `node` (time t) where the vertices between P
 ** and Q have arrived: the new vertex would sit between edges ein (P's
 ** outgoing edge) and eout (Q's incoming edge).  See the top comment. */
@@ -232,17 +398,13 @@ static wk_status resolve(sim *S, uint32_t node, uint32_t P, uint32_t Q, uint32_t
             if (P != WK_NONE && schedule(S, P) != WK_OK) return R->err.code;
             return WK_OK;
         }
-        /* a flat trace from `node` towards the far end f of the piece that
-        ** goes (side: +1 the outgoing one, towards Q; -1 towards P) */
+        if (kind == WK_VEL_COLLINEAR) return collinear_rule(S, node, P, Q, ein, eout, t);
+        /* antiparallel: a flat trace from `node` towards the nearer far end f
+        ** (side: +1 the outgoing piece's, towards Q; -1 the incoming one's,
+        ** towards P) */
         int side;
         wk_point u;
-        if (kind == WK_VEL_COLLINEAR) {
-            double wi = M->L[ein].w, wo = M->L[eout].w;
-            bool out_loses = R->opt.collinear == WK_COLLINEAR_LOWER ? wo > wi : wo < wi;
-            side = out_loses ? +1 : -1;
-            wk_event e = {t, at.x, at.y, ein, eout, WK_NONE};
-            wk_notify_event(R, WK_COUNTER_collinear_resolutions, &e);
-        } else { /* antiparallel: the nearer far end */
+        {
             double dP = P != WK_NONE ? dist2(wk_mono_trace_at(&C->v[P], t), at) : INFINITY;
             double dQ = Q != WK_NONE ? dist2(wk_mono_trace_at(&C->v[Q], t), at) : INFINITY;
             if (!isfinite(dP) && !isfinite(dQ)) {
@@ -278,17 +440,6 @@ static wk_status resolve(sim *S, uint32_t node, uint32_t P, uint32_t Q, uint32_t
             return R->err.code;
         node = nf; /* the absorb step at the top lets f (and, if as far, the
                       other side's far vertex) arrive there */
-        if (kind == WK_VEL_COLLINEAR) {
-            /* only f arrives (the winner's piece goes on) */
-            terminate(S, f, node);
-            if (side > 0) {
-                eout = C->v[f].eout;
-                Q = C->v[f].next;
-            } else {
-                ein = C->v[f].ein;
-                P = C->v[f].prev;
-            }
-        }
     }
     return WK_FAIL(R, WK_EALGO, M->P->name, 0,
                    "monotone: no end to the resolution of a chain event at t = %.17g", t);
@@ -347,8 +498,9 @@ wk_status wk_mono_chain_build(mono *M, uint32_t c) {
     /* the initial wavefront: one vertex per interior chain vertex */
     for (uint32_t j = 1; j < C->m; j++) {
         uint32_t i = (C->first + j) % n;
-        uint32_t node = new_node(&S, P->p[i], 0.0, i);
-        uint32_t id = node == WK_NONE ? WK_NONE : new_trace(&S, (i + n - 1) % n, i, P->p[i], 0.0, node);
+        wk_point p = wk_mono_vertex(M, i);
+        uint32_t node = new_node(&S, p, 0.0, i);
+        uint32_t id = node == WK_NONE ? WK_NONE : new_trace(&S, (i + n - 1) % n, i, p, 0.0, node);
         if (id == WK_NONE) {
             st = R->err.code;
             goto done;
@@ -397,5 +549,9 @@ wk_status wk_mono_chain_build(mono *M, uint32_t c) {
     st = build_walls(M, C);
 done:
     wk_event_queue_clear(R, &S.Q);
+    WK_FREE_ARRAY(R, S.run_v, S.cap_run_v);
+    WK_FREE_ARRAY(R, S.run_e, S.cap_run_e);
+    WK_FREE_ARRAY(R, S.run_nd, S.cap_run_nd);
+    WK_FREE_ARRAY(R, S.run_sched, S.cap_run_sched);
     return st;
 }

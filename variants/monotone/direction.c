@@ -27,7 +27,7 @@
 ** perpendicular to d (here: none within sine WK_PARALLEL_SIN of it, and none
 ** going back within tol).
 ** Candidates per run of the good set, widest run first: if the run is wider
-** than WIDE_ENOUGH, the middle of the widest gap, inside it, between
+** than WK_MONO_DIR_WIDE (tolerance.h), the middle of the widest gap, inside it, between
 ** directions perpendicular to any edge; the exact unit normals of the edges
 ** nearest in angle to the run's middle and ends (exactly an axis for an
 ** axis-parallel edge, so projections are exact there: combs, rectilinear
@@ -55,12 +55,6 @@
 #include <stdlib.h>
 
 #define PI 3.14159265358979323846
-
-/* A run of good directions narrower than this (radians) is tried only
-** through its edges' exact normals and its middle (a single direction up to
-** the tolerance): the widest gap between edge perpendiculars inside it would
-** be chosen by rounding.  Not a tolerance: check_direction decides. */
-#define WIDE_ENOUGH 1e-7
 
 typedef struct ang_ev {
     double a;   /* angle in [0, pi) */
@@ -120,16 +114,16 @@ static bool wall_or_back(wk_point p, wk_point q, double dx) {
 ** projections.  Sets the chain ends *vw, *ve, *is_strict (no chain edge is
 ** a wall or goes back, wall_or_back) and *viol (the largest distance a
 ** vertex lies behind) and returns true if so. */
-static bool check_direction(const wk_polygon *P, wk_point d, double tol, uint32_t *vw,
-                            uint32_t *ve, bool *is_strict, double *viol) {
-    uint32_t n = P->n;
+static bool check_direction(const mono *M, wk_point d, double tol, uint32_t *vw, uint32_t *ve,
+                            bool *is_strict, double *viol) {
+    uint32_t n = M->P->n;
     *viol = 0;
     uint32_t imin = 0, imax = 0;
     for (uint32_t i = 1; i < n; i++) {
-        if (proj(d, P->p[i]) < proj(d, P->p[imin])) imin = i;
-        if (proj(d, P->p[i]) > proj(d, P->p[imax])) imax = i;
+        if (proj(d, wk_mono_vertex(M, i)) < proj(d, wk_mono_vertex(M, imin))) imin = i;
+        if (proj(d, wk_mono_vertex(M, i)) > proj(d, wk_mono_vertex(M, imax))) imax = i;
     }
-    double xmin = proj(d, P->p[imin]), xmax = proj(d, P->p[imax]);
+    double xmin = proj(d, wk_mono_vertex(M, imin)), xmax = proj(d, wk_mono_vertex(M, imax));
     if (!(xmax - xmin > 2 * tol)) return false; /* a sliver: no verdict (*viol = 0) */
     /* v_w: the last vertex (counter-clockwise) of the plateau of equal
     ** projections at imin; v_e: the first of the one at imax.  Then the
@@ -137,9 +131,9 @@ static bool check_direction(const wk_polygon *P, wk_point d, double tol, uint32_
     ** turned in doubles lands in either chain, by its rounding: both are
     ** right within tol). */
     uint32_t a = imin, b = imax, guard = 0;
-    while (proj(d, P->p[(a + 1) % n]) == xmin && guard++ < n) a = (a + 1) % n;
+    while (proj(d, wk_mono_vertex(M, (a + 1) % n)) == xmin && guard++ < n) a = (a + 1) % n;
     guard = 0;
-    while (proj(d, P->p[(b + n - 1) % n]) == xmax && guard++ < n) b = (b + n - 1) % n;
+    while (proj(d, wk_mono_vertex(M, (b + n - 1) % n)) == xmax && guard++ < n) b = (b + n - 1) % n;
     if (a == b) return false;
     bool any_flat = false;
     /* lower chain a -> b: no vertex more than tol west of the running
@@ -147,14 +141,14 @@ static bool check_direction(const wk_polygon *P, wk_point d, double tol, uint32_
     ** minimum */
     double hi = xmin, lo = xmax;
     for (uint32_t i = a; i != b; i = (i + 1) % n) {
-        wk_point p = P->p[i], q = P->p[(i + 1) % n];
+        wk_point p = wk_mono_vertex(M, i), q = wk_mono_vertex(M, (i + 1) % n);
         double x1 = proj(d, q);
         if (hi - x1 > *viol) *viol = hi - x1;
         if (wall_or_back(p, q, x1 - proj(d, p))) any_flat = true;
         if (x1 > hi) hi = x1;
     }
     for (uint32_t i = b; i != a; i = (i + 1) % n) {
-        wk_point p = P->p[i], q = P->p[(i + 1) % n];
+        wk_point p = wk_mono_vertex(M, i), q = wk_mono_vertex(M, (i + 1) % n);
         double x1 = proj(d, q);
         if (x1 - lo > *viol) *viol = x1 - lo;
         if (wall_or_back(p, q, proj(d, p) - x1)) any_flat = true;
@@ -226,7 +220,7 @@ wk_status wk_mono_direction(mono *M) {
         wk_point dm = {cos(mid), sin(mid)};
         double start = g1;
         wk_point us = u1, ue = u2; /* the offsets whose perpendiculars end the arc */
-        if (len < 1e-6 || len > PI - 1e-6) {
+        if (len < WK_MONO_DIR_FLAT_ARC || len > PI - WK_MONO_DIR_FLAT_ARC) {
             /* u1 and u2 (nearly) on one line: the midpoint test would be
             ** decided by rounding.  A nearly flat vertex (u1 . u2 < 0) is
             ** bad only for d nearly perpendicular to its edges: the long
@@ -327,7 +321,7 @@ wk_status wk_mono_direction(mono *M) {
         uint32_t vw_, ve_;                                                      \
         bool strict_;                                                           \
         double v_;                                                              \
-        if (check_direction(P, d_, tol, &vw_, &ve_, &strict_, &v_)) {           \
+        if (check_direction(M, d_, tol, &vw_, &ve_, &strict_, &v_)) {           \
             if (strict_) {                                                      \
                 M->d = d_, M->vw = vw_, M->ve = ve_, M->strict = true;          \
                 goto done;                                                      \
@@ -350,7 +344,7 @@ wk_status wk_mono_direction(mono *M) {
         run_viol = INFINITY;                                                          \
     } while (0)
     double best_lo = runs[0].lo, best_hi = runs[0].hi;
-    if (best_hi - best_lo > WIDE_ENOUGH) {
+    if (best_hi - best_lo > WK_MONO_DIR_WIDE) {
         /* the widest gap between edge perpendiculars inside (lo, hi) */
         uint32_t k = 0;
         for (uint32_t e = 0; e < n; e++) {

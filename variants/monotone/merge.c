@@ -70,7 +70,7 @@ static double level(const wk_offset_line *L, wk_point q) {
 static bool coplanar(const mono *M, uint32_t a, uint32_t b) {
     const wk_offset_line *A = &M->L[a], *B = &M->L[b];
     double gx = A->nx / A->w - B->nx / B->w, gy = A->ny / A->w - B->ny / B->w;
-    if (fabs(gx) + fabs(gy) > 1e-12 * (1 / A->w + 1 / B->w)) return false;
+    if (fabs(gx) + fabs(gy) > WK_MONO_COPLANAR_REL * (1 / A->w + 1 / B->w)) return false;
     return fabs(A->c - B->c) <= M->eps_d;
 }
 
@@ -104,7 +104,7 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
     }
     double den = cross(D, W->dir);
     wk_point Ap = sub(A, W->p);
-    if (fabs(den) <= 1e-14 && fabs(cross(D, Ap)) <= M->eps_d) {
+    if (fabs(den) <= WK_MONO_RAY_PARALLEL_SIN && fabs(cross(D, Ap)) <= M->eps_d) {
         /* The ray runs along this trace.  If the face beyond is coplanar with
         ** the other chain's face, M' really continues between those two
         ** (the trace is where that coincidence starts): cross here. */
@@ -126,7 +126,8 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
         }
         return;
     }
-    if (left_wall ? den <= 1e-14 : den >= -1e-14) return; /* not outward */
+    if (left_wall ? den <= WK_MONO_RAY_PARALLEL_SIN : den >= -WK_MONO_RAY_PARALLEL_SIN)
+        return; /* not outward */
     double lambda = cross(D, Ap) / den;
     double mu = cross(W->dir, Ap) / den;
     if (lambda < -M->eps_d || mu < -M->eps_d || mu > len + M->eps_d) return;
@@ -155,7 +156,7 @@ static void walk_wall(const walk *W, uint32_t c, const uint32_t *w, uint32_t k, 
     const mono *M = W->M;
     const mono_chain *C = &M->ch[c];
     if (k == 0) return;
-    double tol = 1e3 * M->eps_t + 1e-12 * fabs(tau_p);
+    double tol = WK_MONO_LEVEL_SLACK * M->eps_t + WK_MONO_LEVEL_REL * fabs(tau_p);
     if (kappa >= 0) {
         /* first trace whose end level reaches tau_p - tol */
         uint32_t lo = 0, hi = k;
@@ -235,8 +236,8 @@ wk_status wk_mono_merge(mono *M) {
     W.M = M;
     uint32_t eu = (M->vw + n - 1) % n, eb = M->vw; /* the edges at v_w */
     uint32_t eu_end = M->ve, eb_end = (M->ve + n - 1) % n;
-    if (add_mnode(M, P->p[M->vw], 0.0, M->vw, &W.cur) != WK_OK) return R->err.code;
-    W.p = P->p[M->vw];
+    if (add_mnode(M, wk_mono_vertex(M, M->vw), 0.0, M->vw, &W.cur) != WK_OK) return R->err.code;
+    W.p = wk_mono_vertex(M, M->vw);
     uint64_t max_steps = 16 * (uint64_t)n + 64;
     for (uint64_t step = 0; step < max_steps; step++) {
         const wk_offset_line *Lu = &M->L[eu], *Lb = &M->L[eb];
@@ -248,7 +249,7 @@ wk_status wk_mono_merge(mono *M) {
             dir = (wk_point){Lu->nx, Lu->ny};
             if (dot(dir, M->d) < 0) dir.x = -dir.x, dir.y = -dir.y;
             gl = 1;
-        } else if (!(gl > 1e-12 * (1 / Lu->w + 1 / Lb->w))) {
+        } else if (!(gl > WK_MONO_COPLANAR_REL * (1 / Lu->w + 1 / Lb->w))) {
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: edges %u and %u have no bisector", eu, eb);
         }
@@ -256,8 +257,10 @@ wk_status wk_mono_merge(mono *M) {
         /* dir = g rotated by +90 degrees keeps tau_u < tau_b (the upper
         ** face) on the left: east when M' is strictly monotone, and the
         ** right way along a wall pair perpendicular to the sweep (two walls
-        ** facing each other from different chains, non-strict case) */
-        if (dot(dir, M->d) < -1e-9)
+        ** facing each other from different chains, non-strict case; walls
+        ** are edges within sine WK_PARALLEL_SIN of the perpendicular to d,
+        ** direction.c, so M' between them may point that far west) */
+        if (dot(dir, M->d) < -WK_PARALLEL_SIN)
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: the merge chain turns west between edges %u and %u", eu, eb);
         W.dir = dir;
@@ -267,10 +270,10 @@ wk_status wk_mono_merge(mono *M) {
         walk_face(&W, 1, eu, &best);
         walk_face(&W, 0, eb, &best);
         if (eu == eu_end && eb == eb_end) {
-            double lend = dot(sub(P->p[M->ve], W.p), dir);
+            double lend = dot(sub(wk_mono_vertex(M, M->ve), W.p), dir);
             if (lend <= best.lambda + M->eps_d) {
                 uint32_t m;
-                if (add_mnode(M, P->p[M->ve], 0.0, M->ve, &m) != WK_OK ||
+                if (add_mnode(M, wk_mono_vertex(M, M->ve), 0.0, M->ve, &m) != WK_OK ||
                     add_marc(M, W.cur, m, eu, eb) != WK_OK)
                     return R->err.code;
                 return WK_OK;
@@ -280,7 +283,7 @@ wk_status wk_mono_merge(mono *M) {
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: the merge chain leaves faces %u / %u nowhere (at %.17g, "
                            "%.17g)",
-                           eu, eb, W.p.x, W.p.y);
+                           eu, eb, W.p.x + M->o.x, W.p.y + M->o.y);
         /* the new merge vertex: where the offset lines of eu, eb and the
         ** crossed trace's other edge meet, if that agrees with the ray */
         wk_point X = {W.p.x + best.lambda * dir.x, W.p.y + best.lambda * dir.y};
@@ -288,7 +291,7 @@ wk_status wk_mono_merge(mono *M) {
         wk_point q;
         double tq;
         if (wk_three_lines_meet(Lu, Lb, &M->L[best.face], &q, &tq) &&
-            hypot(q.x - X.x, q.y - X.y) <= 1e3 * M->eps_d && tq >= 0) {
+            hypot(q.x - X.x, q.y - X.y) <= WK_MONO_EXACT_SLACK * M->eps_d && tq >= 0) {
             X = q;
             t = tq;
         }
@@ -302,7 +305,8 @@ wk_status wk_mono_merge(mono *M) {
         }
         if (W.n_excl == CLUSTER_MAX)
             return WK_FAIL(R, WK_EALGO, P->name, 0,
-                           "monotone: the merge chain circles at (%.17g, %.17g)", W.p.x, W.p.y);
+                           "monotone: the merge chain circles at (%.17g, %.17g)",
+                           W.p.x + M->o.x, W.p.y + M->o.y);
         W.excl_c[W.n_excl] = best.chain;
         W.excl_v[W.n_excl++] = best.trace;
         if (WK_GROW(R, M->cr, M->cap_cr, M->n_cr + 1) != WK_OK) return R->err.code;

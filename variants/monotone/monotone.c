@@ -42,7 +42,8 @@ static wk_status monotone_merge_run(mono *M, wk_skeleton **out) {
     wk_status st;
     M->L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
     if (!M->L) return R->err.code;
-    for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge(P, i, &M->L[i]);
+    M->o = wk_polygon_centre(P);
+    for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge_at(P, i, M->o, &M->L[i]);
     if ((st = wk_mono_direction(M)) != WK_OK) return st;
     if (!M->strict) {
         /* Walls perpendicular to the sweep with weights: the merge walk's

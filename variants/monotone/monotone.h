@@ -14,7 +14,14 @@
 **                     side of M', plus M';
 **   monotone.c        the variant entry.
 **
-** Frame.  Input coordinates are never changed.  "East" is the sweep
+** Frame.  Input coordinates are never changed.  Every point of the variant
+** (nodes, traces, M', the offset lines) is relative to the origin o, the
+** centre of P's bounding box (wk_polygon_centre, as the reference's
+** wavefront has it): far from the origin the rounding of the absolute
+** coordinates is far above eps_d (a polygon of size 1e-3 at 2.2e6: ulp
+** 4.7e-10 against eps_d = 1.3e-12), near it p - o is exact for the
+** polygon's vertices; the skeleton's nodes get o back (assemble.c).
+** "East" is the sweep
 ** direction d (a unit vector), "north" is d rotated by +90 degrees; the
 ** lower chain runs counter-clockwise from the westmost vertex v_w to the
 ** eastmost v_e, the upper chain from v_e back to v_w.  Only d is rotated
@@ -122,7 +129,8 @@ typedef struct mono_marc {
 typedef struct mono {
     wk_run *R;
     const wk_polygon *P;
-    wk_offset_line *L;      /* per edge */
+    wk_point o;             /* origin of the variant's frame (see the top) */
+    wk_offset_line *L;      /* per edge, relative to o */
     wk_point d;             /* east (unit) */
     bool strict;            /* no edge is perpendicular to d */
     uint32_t vw, ve;        /* westmost / eastmost vertex (chain ends) */
@@ -135,6 +143,11 @@ typedef struct mono {
     mono_marc *ma;
     uint32_t n_ma, cap_ma;
 } mono;
+
+/* Input vertex i relative to the origin o. */
+static inline wk_point wk_mono_vertex(const mono *M, uint32_t i) {
+    return (wk_point){M->P->p[i].x - M->o.x, M->P->p[i].y - M->o.y};
+}
 
 /* direction.c: choose d (a unit vector) in which P is monotone, preferring a
 ** direction with no edge perpendicular to it (M->strict), and set M->d,
