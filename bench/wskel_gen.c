@@ -26,6 +26,8 @@ static const char usage_text[] =
     "  --r R              reflex vertices, for the families that take it\n"
     "                     (star, notched, crossing, monotone; the others check\n"
     "                     it against their fixed rule)\n"
+    "  --holes H          holes (default 0), for the families that take them\n"
+    "                     (holes, convex); n >= 3H+3\n"
     "  --seed S           unsigned 64-bit seed (default 1)\n"
     "  --weights MODE     unit (default), uniform[:a:b] (0.5..2), two[:a:b] (1|3),\n"
     "                     int[:a:b] (1..4); weights never change the geometry\n"
@@ -63,7 +65,9 @@ static bool parse_u64(const char *s, uint64_t max, uint64_t *out) {
 
 /* GraphML as the Salzburg database and surfer2 read it: string-typed
 ** coordinate and weight keys, one node per vertex, one edge per polygon
-** edge (i -> i+1) carrying its weight. */
+** edge (i -> the next vertex of its ring) carrying its weight; holes are
+** further cycles (the reader takes the cycle of largest area as the outer
+** ring). */
 static void write_graphml(FILE *f, const wk_polygon *P, const char *header) {
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- %s -->\n", header);
     fprintf(f,
@@ -87,7 +91,7 @@ static void write_graphml(FILE *f, const wk_polygon *P, const char *header) {
                 i, P->p[i].x, P->p[i].y);
     for (uint32_t i = 0; i < P->n; i++)
         fprintf(f, "    <edge source=\"%u\" target=\"%u\"><data key=\"w\">%.17g</data></edge>\n",
-                i, i + 1 == P->n ? 0 : i + 1, P->w[i]);
+                i, wk_polygon_next(P, i), P->w[i]);
     fprintf(f, "  </graph>\n</graphml>\n");
 }
 
@@ -124,6 +128,11 @@ int main(int argc, char **argv) {
             if (!parse_u64(argv[++i], UINT32_MAX, &v))
                 return usage_error("--r must be an integer >= 0 (got '%s')", argv[i]);
             g.r = (int64_t)v;
+        } else if (!strcmp(a, "--holes")) {
+            NEED_ARG();
+            if (!parse_u64(argv[++i], UINT32_MAX, &v))
+                return usage_error("--holes must be an integer >= 0 (got '%s')", argv[i]);
+            g.holes = (uint32_t)v;
         } else if (!strcmp(a, "--seed")) {
             NEED_ARG();
             if (!parse_u64(argv[++i], UINT64_MAX, &v))
@@ -162,10 +171,14 @@ int main(int argc, char **argv) {
         goto done;
     }
 
-    char wtext[96], header[256];
+    char wtext[96], htext[32] = "", header[256];
     wk_gen_weights_format(&g, wtext, sizeof wtext);
-    snprintf(header, sizeof header, "wskel-gen %d: family=%s n=%u r=%u seed=%llu weights=%s",
-             WK_GEN_VERSION, g.family, P->n, P->r, (unsigned long long)g.seed, wtext);
+    /* holes=H only where holes are possible, so the other families' headers
+    ** stay as they were */
+    if (wk_gen_family_takes_holes(g.family) && (g.holes > 0 || !strcmp(g.family, "holes")))
+        snprintf(htext, sizeof htext, " holes=%u", g.holes);
+    snprintf(header, sizeof header, "wskel-gen %d: family=%s n=%u%s r=%u seed=%llu weights=%s",
+             WK_GEN_VERSION, g.family, P->n, htext, P->r, (unsigned long long)g.seed, wtext);
 
     if (wk_output_open(&R, &out, outpath) != WK_OK) {
         rc = report(&R);

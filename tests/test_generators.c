@@ -8,7 +8,10 @@
 ** across seeds; the weight modes stay in range and never move a vertex; the
 ** crossing family's r bisector rays cross pairwise, r(r-1)/2 times (counted
 ** by brute force); impossible parameters fail with WK_EINPUT and a message
-** naming the limit; allocation failures are clean.  Each test has its own
+** naming the limit; allocation failures are clean.  The families with holes
+** (holes, convex --holes H): every polygon validates, has 1 + H rings split
+** as documented, no ring reversed, rings pairwise disjoint and holes inside
+** (O(n^2) oracle), deterministic, H = 0 one simple ring.  Each test has its own
 ** run and ends with zero live bytes.
 */
 #include <criterion/criterion.h>
@@ -446,5 +449,238 @@ Test(generators, large_n_smoke) {
     cr_assert_eq(gen(&R, "star", 100000, 50000, 1, NULL, &P), WK_OK, "%s", R.err.msg);
     cr_assert_eq(P->r, 50000);
     wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+/* ---- the families with holes (holes, convex --holes) ---- */
+
+static wk_status gen_h(wk_run *R, const char *family, uint32_t n, uint32_t holes, uint64_t seed,
+                       const char *weights, wk_polygon **P) {
+    wk_gen_params g;
+    wk_gen_params_init(&g);
+    g.family = family;
+    g.n = n;
+    g.holes = holes;
+    g.seed = seed;
+    if (weights && wk_gen_parse_weights(R, weights, &g) != WK_OK) return R->err.code;
+    return wk_generate(R, &g, P);
+}
+
+/* Independent oracle for a polygon with holes, O(n^2): edges of one ring
+** meet only when adjacent (at their shared vertex), edges of different
+** rings never; each hole's first vertex is inside the outer ring (crossing
+** number with exact orientation tests; the rings are disjoint, so one
+** vertex decides). */
+static bool brute_rings_ok(const wk_polygon *P) {
+    uint32_t n = P->n;
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t j = i + 1; j < n; j++) {
+            uint32_t ni = wk_polygon_next(P, i), nj = wk_polygon_next(P, j);
+            wk_seg_meet m = wk_segments_meet(P->p[i], P->p[ni], P->p[j], P->p[nj]);
+            bool adjacent = ni == j || nj == i;
+            if (adjacent ? m != WK_SEG_TOUCH : m != WK_SEG_DISJOINT) return false;
+        }
+    for (uint32_t k = 1; k < P->n_rings; k++) {
+        wk_point q = P->p[P->ring_start[k]];
+        bool inside = false;
+        for (uint32_t i = 0; i < P->ring_start[1]; i++) {
+            wk_point a = P->p[i], b = P->p[wk_polygon_next(P, i)];
+            if ((a.y > q.y) != (b.y > q.y)) {
+                int o = wk_orient2d(a, b, q, NULL);
+                if ((b.y > a.y) ? o > 0 : o < 0) inside = !inside;
+            }
+        }
+        if (!inside) return false;
+    }
+    return true;
+}
+
+/* The documented split: holes get max(3H, floor(n/2)) (at most n-3) in
+** all, evenly, the first ones one more; the outer ring the rest. */
+static void check_split(const wk_polygon *P, uint32_t n, uint32_t H) {
+    cr_assert_eq(P->n_rings, H + 1, "n=%u H=%u: %u rings", n, H, P->n_rings);
+    uint32_t nh = H == 0 ? 0 : n / 2;
+    if (nh < 3 * H) nh = 3 * H;
+    if (H > 0 && nh > n - 3) nh = n - 3;
+    cr_assert_eq(P->ring_start[1], n - nh, "n=%u H=%u: outer ring %u", n, H, P->ring_start[1]);
+    for (uint32_t j = 0; j < H; j++) {
+        uint32_t m = P->ring_start[j + 2] - P->ring_start[j + 1];
+        cr_assert_eq(m, nh / H + (j < nh % H), "n=%u H=%u: hole %u has %u vertices", n, H, j, m);
+        cr_assert(m >= 3);
+    }
+}
+
+static void check_holes_polygon(wk_run *R, const char *f, uint32_t n, uint32_t H, uint64_t seed,
+                                const wk_polygon *P) {
+    cr_assert_eq(P->n, n, "%s n=%u H=%u seed=%llu: %u vertices", f, n, H,
+                 (unsigned long long)seed, P->n);
+    check_split(P, n, H);
+    cr_assert(!P->reversed, "%s n=%u H=%u: outer ring generated clockwise", f, n, H);
+    for (uint32_t i = 0; i < n; i++) {
+        cr_assert_eq(P->input_index[i], i, "%s n=%u H=%u: ring reversed on input", f, n, H);
+        cr_assert(isfinite(P->p[i].x) && isfinite(P->p[i].y));
+    }
+    cr_assert_eq(wk_polygon_validate(R, P), WK_OK, "%s n=%u H=%u seed=%llu: %s", f, n, H,
+                 (unsigned long long)seed, R->err.msg);
+    cr_assert(wk_polygon_area(P) > 0);
+    cr_assert_eq(count_reflex(P), P->r);
+    if (!strcmp(f, "convex"))
+        cr_assert_eq(P->r, n - P->ring_start[1], "convex n=%u H=%u: r=%u, want the hole vertices",
+                     n, H, P->r);
+    if (n <= 400)
+        cr_assert(brute_rings_ok(P), "%s n=%u H=%u seed=%llu: rings meet or a hole is outside",
+                  f, n, H, (unsigned long long)seed);
+}
+
+Test(generators, holes_valid_split_and_counts) {
+    wk_run R;
+    wk_run_init(&R);
+    static const char *const fams[] = {"holes", "convex"};
+    static const uint32_t Hs[] = {0, 1, 2, 3, 4, 5, 8, 17, 50};
+    static const uint32_t extra[] = {0, 1, 7, 40, 300};
+    for (size_t k = 0; k < 2; k++)
+        for (size_t h = 0; h < sizeof Hs / sizeof Hs[0]; h++)
+            for (size_t e = 0; e < sizeof extra / sizeof extra[0]; e++) {
+                uint32_t H = Hs[h], n = 3 * H + 3 + extra[e];
+                for (uint64_t seed = 1; seed <= 6; seed++) {
+                    wk_polygon *P = NULL;
+                    wk_status st = gen_h(&R, fams[k], n, H, seed, "uniform", &P);
+                    cr_assert_eq(st, WK_OK, "%s n=%u H=%u seed=%llu: %s", fams[k], n, H,
+                                 (unsigned long long)seed, R.err.msg);
+                    check_holes_polygon(&R, fams[k], n, H, seed, P);
+                    wk_polygon_free(&R, P);
+                }
+            }
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+/* H = 0: one simple counter-clockwise ring; convex --holes 0 is exactly
+** the convex family of before (same draws). */
+Test(generators, holes_zero_is_simple) {
+    wk_run R;
+    wk_run_init(&R);
+    for (uint32_t n = 3; n <= 300; n += 13)
+        for (uint64_t seed = 1; seed <= 4; seed++) {
+            wk_polygon *P = NULL, *Q = NULL;
+            cr_assert_eq(gen_h(&R, "holes", n, 0, seed, NULL, &P), WK_OK, "%s", R.err.msg);
+            cr_assert_eq(P->n_rings, 1);
+            cr_assert_null(P->ring_of);
+            check_polygon("holes", n, -1, seed, P);
+            cr_assert_eq(gen_h(&R, "convex", n, 0, seed, NULL, &Q), WK_OK, "%s", R.err.msg);
+            wk_polygon *C = NULL;
+            cr_assert_eq(gen(&R, "convex", n, -1, seed, NULL, &C), WK_OK);
+            cr_assert_eq(Q->n_rings, 1);
+            cr_assert(!memcmp(Q->p, C->p, n * sizeof *Q->p), "convex --holes 0 moved");
+            wk_polygon_free(&R, P);
+            wk_polygon_free(&R, Q);
+            wk_polygon_free(&R, C);
+        }
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+Test(generators, holes_deterministic_and_weights_unmoved) {
+    wk_run R;
+    wk_run_init(&R);
+    static const char *const fams[] = {"holes", "convex"};
+    for (size_t k = 0; k < 2; k++)
+        for (uint32_t H = 1; H <= 30; H += 7) {
+            uint32_t n = 12 * H + 20;
+            wk_polygon *A = NULL, *B = NULL, *C = NULL, *U = NULL;
+            cr_assert_eq(gen_h(&R, fams[k], n, H, 42, "int", &A), WK_OK, "%s", R.err.msg);
+            cr_assert_eq(gen_h(&R, fams[k], n, H, 42, "int", &B), WK_OK, "%s", R.err.msg);
+            cr_assert_eq(gen_h(&R, fams[k], n, H, 43, "int", &C), WK_OK, "%s", R.err.msg);
+            cr_assert_eq(gen_h(&R, fams[k], n, H, 42, NULL, &U), WK_OK, "%s", R.err.msg);
+            cr_assert(!memcmp(A->p, B->p, n * sizeof *A->p), "%s H=%u: rerun differs", fams[k], H);
+            cr_assert(!memcmp(A->w, B->w, n * sizeof *A->w), "%s H=%u: weights differ", fams[k], H);
+            cr_assert(!memcmp(A->ring_start, B->ring_start, (H + 2) * sizeof *A->ring_start));
+            cr_assert(memcmp(A->p, C->p, n * sizeof *A->p) != 0, "%s H=%u: seeds agree", fams[k],
+                      H);
+            cr_assert(!memcmp(A->p, U->p, n * sizeof *A->p), "%s H=%u: weights moved vertices",
+                      fams[k], H);
+            bool varied = false;
+            for (uint32_t i = 0; i < n; i++) {
+                cr_assert(A->w[i] >= 1 && A->w[i] <= 4 && A->w[i] == floor(A->w[i]));
+                varied |= A->w[i] != A->w[0];
+            }
+            cr_assert(varied, "%s H=%u: one weight everywhere", fams[k], H);
+            wk_polygon_free(&R, A);
+            wk_polygon_free(&R, B);
+            wk_polygon_free(&R, C);
+            wk_polygon_free(&R, U);
+        }
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+Test(generators, holes_impossible_parameters) {
+    static const struct {
+        const char *family;
+        uint32_t n, holes;
+        int64_t r;
+        wk_status st;
+        const char *msg;
+    } cases[] = {
+        {"holes", 11, 3, -1, WK_EINPUT, "holes: n=11 < 3*holes+3=12"},
+        {"convex", 5, 1, -1, WK_EINPUT, "convex: n=5 < 3*holes+3=6"},
+        {"holes", 20, 2, 4, WK_EINPUT, "holes: r=4 cannot be chosen"},
+        {"convex", 20, 2, 4, WK_EINPUT, "convex: r=4 cannot be chosen: r = the hole vertices = 10"},
+        {"star", 20, 1, -1, WK_EINPUT, "star: holes=1: this family has no holes"},
+        {"comb", 40, 2, -1, WK_EINPUT, "comb: holes=2: this family has no holes"},
+        {"holes", 100, WK_POLYGON_MAX_RINGS, -1, WK_EINPUT, "holes: holes="},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        wk_run R;
+        wk_run_init(&R);
+        wk_gen_params g;
+        wk_gen_params_init(&g);
+        g.family = cases[i].family;
+        g.n = cases[i].n;
+        g.holes = cases[i].holes;
+        g.r = cases[i].r;
+        wk_polygon *P = (wk_polygon *)&R;
+        wk_status st = wk_generate(&R, &g, &P);
+        cr_assert_eq(st, cases[i].st, "case %zu: status %d (%s)", i, st, R.err.msg);
+        cr_assert_null(P);
+        cr_assert(strstr(R.err.msg, cases[i].msg), "case %zu: message '%s' lacks '%s'", i,
+                  R.err.msg, cases[i].msg);
+        ASSERT_CLEAN_CLOSE(R);
+    }
+    cr_assert(wk_gen_family_takes_holes("holes") && wk_gen_family_takes_holes("convex"));
+    cr_assert(!wk_gen_family_takes_holes("star") && !wk_gen_family_takes_holes("nope"));
+}
+
+Test(generators, holes_allocation_failures_are_clean) {
+    static const char *const fams[] = {"holes", "convex"};
+    for (size_t c = 0; c < 2; c++)
+        for (int64_t k = 0;; k++) {
+            cr_assert(k < 1000, "%s: never succeeds", fams[c]);
+            wk_run R;
+            wk_run_init(&R);
+            R.alloc.fail_after = k;
+            wk_polygon *P = NULL;
+            wk_status st = gen_h(&R, fams[c], 60, 4, 3, "uniform", &P);
+            if (st == WK_OK) {
+                R.alloc.fail_after = -1; /* the check's own validation allocates */
+                check_holes_polygon(&R, fams[c], 60, 4, 3, P);
+                wk_polygon_free(&R, P);
+                ASSERT_CLEAN_CLOSE(R);
+                break;
+            }
+            cr_assert_eq(st, WK_ENOMEM, "%s k=%lld: %s", fams[c], (long long)k, R.err.msg);
+            cr_assert_null(P);
+            cr_assert_eq(wk_run_close(&R), 0, "%s k=%lld: leak", fams[c], (long long)k);
+        }
+}
+
+Test(generators, holes_large_smoke) {
+    wk_run R;
+    wk_run_init(&R);
+    static const uint32_t Hs[] = {1, 100, 10000};
+    for (size_t h = 0; h < 3; h++) {
+        wk_polygon *P = NULL;
+        cr_assert_eq(gen_h(&R, "holes", 100000, Hs[h], 1, NULL, &P), WK_OK, "H=%u: %s", Hs[h],
+                     R.err.msg);
+        check_split(P, 100000, Hs[h]);
+        wk_polygon_free(&R, P);
+    }
     ASSERT_CLEAN_CLOSE(R);
 }

@@ -1,15 +1,17 @@
 /*
 ** generators.c: the generator front end: parameters, weight modes, the family
 ** table and wk_generate, which runs a family, draws the weights and has
-** wk_polygon_from_arrays validate the result.
+** wk_polygon_from_rings validate the result.
 **
-** Determinism: everything is a function of (family, n, r, seed, weight mode).
+** Determinism: everything is a function of (family, n, r, holes, seed,
+** weight mode).
 ** Geometry draws from stream 1 of the seed, weights from stream 2, so the
 ** weight mode never changes a coordinate.
 **
 ** Invariant of every polygon wk_generate hands out: it passed
-** wk_polygon_from_arrays (simple, exactly n vertices), was already
-** counter-clockwise (not reversed, so w[i] is the weight drawn for edge i),
+** wk_polygon_from_rings (simple, exactly n vertices over 1 + holes rings),
+** was already stored as generated (outer ring counter-clockwise, holes
+** clockwise, none reversed, so w[i] is the weight drawn for edge i),
 ** and has exactly the reflex count its family promised, if it promised one.
 ** The families themselves live in gen_*.c (see gen_internal.h).
 */
@@ -21,32 +23,37 @@
 
 typedef struct family {
     const char *name;
-    wk_gen_fn fn;
+    wk_gen_fn fn;            /* NULL: rings only */
+    wk_gen_rings_fn rings;   /* holes > 0 (or always, when fn is NULL); NULL: no holes */
     const char *summary;
 } family;
 
 /* The order here is the order of --list and of wk_gen_families. */
 static const family families[] = {
-    {"star", wk_gen_star,
+    {"star", wk_gen_star, NULL,
      "star-shaped, radii in [0.2,1]R; r random, or exactly --r (<= n/2) spikes"},
-    {"comb", wk_gen_comb,
+    {"comb", wk_gen_comb, NULL,
      "equal rectangular teeth on a bar, integer coordinates; r = 2*(floor(n/4)-1)"},
-    {"spiral", wk_gen_spiral, "thick polygonal spiral, inner chain reflex; r = floor(n/2)-2"},
-    {"notched", wk_gen_notched,
+    {"spiral", wk_gen_spiral, NULL, "thick polygonal spiral, inner chain reflex; r = floor(n/2)-2"},
+    {"notched", wk_gen_notched, NULL,
      "regular n-gon with r (<= n/2, default n/4) non-adjacent vertices pushed in"},
-    {"crossing", wk_gen_crossing,
+    {"crossing", wk_gen_crossing, NULL,
      "disc with r spikes at staggered depths, every pair of rays crosses: r(r-1)/2; n >= 3r+4"},
-    {"random", wk_gen_random,
+    {"random", wk_gen_random, NULL,
      "random simple polygon: 2-opt untangled points (n <= 5000), else random star"},
-    {"monotone", wk_gen_monotone, "x-monotone, exactly r reflex (r <= n-3, default (n-2)/2)"},
-    {"rectilinear", wk_gen_rectilinear,
+    {"monotone", wk_gen_monotone, NULL,
+     "x-monotone, exactly r reflex (r <= n-3, default (n-2)/2)"},
+    {"rectilinear", wk_gen_rectilinear, NULL,
      "axis-parallel, two staircases, integer coordinates; n even, r = n/2-2"},
-    {"convex", wk_gen_convex, "points on a random ellipse; r = 0"},
+    {"convex", wk_gen_convex, wk_gen_convex_holes,
+     "points on a random ellipse; r = 0; --holes H: convex windows, r = hole vertices"},
+    {"holes", NULL, wk_gen_holes,
+     "--holes H star/convex holes in a star/convex outer ring; n >= 3H+3, holes get max(3H,n/2)"},
 };
 
 const char *const wk_gen_families[] = {
     "star", "comb", "spiral", "notched", "crossing", "random", "monotone", "rectilinear", "convex",
-    NULL,
+    "holes", NULL,
 };
 
 _Static_assert(sizeof families / sizeof families[0] ==
@@ -65,11 +72,17 @@ const char *wk_gen_family_summary(const char *name) {
     return F ? F->summary : NULL;
 }
 
+bool wk_gen_family_takes_holes(const char *name) {
+    const family *F = find_family(name);
+    return F && F->rings;
+}
+
 void wk_gen_params_init(wk_gen_params *g) {
     memset(g, 0, sizeof *g);
     g->family = NULL;
     g->n = 0;
     g->r = -1;
+    g->holes = 0;
     g->seed = 1;
     g->weights = WK_W_UNIT;
     g->wa = 0.5;
@@ -180,12 +193,23 @@ wk_status wk_generate(wk_run *R, const wk_gen_params *g, wk_polygon **out) {
     wk_status st = check_weights(R, g->weights, g->wa, g->wb);
     if (st != WK_OK) return st;
 
-    uint32_t n = g->n;
+    bool rings = F->rings && (g->holes > 0 || !F->fn);
+    if (g->holes > 0 && !F->rings)
+        return WK_FAIL(R, WK_EINPUT, NULL, 0,
+                       "%s: holes=%u: this family has no holes (families with holes: convex, "
+                       "holes)",
+                       F->name, g->holes);
+    if ((uint64_t)g->holes + 1 > WK_POLYGON_MAX_RINGS)
+        return WK_FAIL(R, WK_EINPUT, NULL, 0, "%s: holes=%u > %u", F->name, g->holes,
+                       WK_POLYGON_MAX_RINGS - 1);
+
+    uint32_t n = g->n, n_rings = rings ? g->holes + 1 : 1;
     wk_polygon *P = NULL;
     double *x = WK_NEW_ARRAY(R, double, n);
     double *y = WK_NEW_ARRAY(R, double, n);
     double *w = WK_NEW_ARRAY(R, double, n);
-    if (!x || !y || !w) {
+    uint32_t *ring_size = WK_NEW_ARRAY(R, uint32_t, n_rings);
+    if (!x || !y || !w || !ring_size) {
         st = WK_ENOMEM;
         goto fail;
     }
@@ -194,20 +218,46 @@ wk_status wk_generate(wk_run *R, const wk_gen_params *g, wk_polygon **out) {
     wk_rng_seed(&geo, g->seed, 1);
     wk_rng_seed(&wr, g->seed, 2);
     int64_t r_promised = -1;
-    if ((st = F->fn(R, g, &geo, x, y, &r_promised)) != WK_OK) goto fail;
+    if (rings) st = F->rings(R, g, &geo, x, y, ring_size, &r_promised);
+    else {
+        ring_size[0] = n;
+        st = F->fn(R, g, &geo, x, y, &r_promised);
+    }
+    if (st != WK_OK) goto fail;
+    uint64_t total = 0;
+    for (uint32_t k = 0; k < n_rings; k++) total += ring_size[k];
+    if (total != n) {
+        st = WK_FAIL(R, WK_EALGO, NULL, 0, "generator bug: %s: rings hold %llu vertices, not %u",
+                     F->name, (unsigned long long)total, n);
+        goto fail;
+    }
     for (uint32_t i = 0; i < n; i++) w[i] = draw_weight(&wr, g);
 
     char name[128];
-    snprintf(name, sizeof name, "%s(n=%u,seed=%llu)", F->name, n, (unsigned long long)g->seed);
-    if ((st = wk_polygon_from_arrays(R, n, x, y, w, name, NULL, &P)) != WK_OK) goto fail;
-    /* Defensive: the families build counter-clockwise polygons with a known
-    ** reflex count by construction; a mismatch is a generator bug, and a
-    ** wrong polygon must not reach a benchmark under a false label. */
+    if (g->holes > 0)
+        snprintf(name, sizeof name, "%s(n=%u,holes=%u,seed=%llu)", F->name, n, g->holes,
+                 (unsigned long long)g->seed);
+    else
+        snprintf(name, sizeof name, "%s(n=%u,seed=%llu)", F->name, n,
+                 (unsigned long long)g->seed);
+    if ((st = wk_polygon_from_rings(R, n_rings, ring_size, x, y, w, name, NULL, &P)) != WK_OK)
+        goto fail;
+    /* Defensive: the families build the outer ring counter-clockwise and the
+    ** holes clockwise, with a known reflex count, by construction; a
+    ** mismatch is a generator bug, and a wrong polygon must not reach a
+    ** benchmark under a false label. */
     if (P->reversed) {
         st = WK_FAIL(R, WK_EALGO, name, 0, "generator bug: %s produced a clockwise polygon",
                      F->name);
         goto fail;
     }
+    for (uint32_t i = 0; n_rings > 1 && i < n; i++)
+        if (P->input_index[i] != i) {
+            st = WK_FAIL(R, WK_EALGO, name, 0,
+                         "generator bug: %s produced a counter-clockwise hole (ring %u)",
+                         F->name, wk_polygon_ring(P, i));
+            goto fail;
+        }
     if (r_promised >= 0 && (int64_t)P->r != r_promised) {
         st = WK_FAIL(R, WK_EALGO, name, 0,
                      "generator bug: %s has %u reflex vertices, promised %lld", F->name, P->r,
@@ -225,5 +275,6 @@ done:
     WK_FREE_ARRAY(R, x, n);
     WK_FREE_ARRAY(R, y, n);
     WK_FREE_ARRAY(R, w, n);
+    if (ring_size) WK_FREE_ARRAY(R, ring_size, n_rings);
     return st;
 }

@@ -1,8 +1,9 @@
 /*
 ** generators.h: seeded polygon families for tests and benchmarks.
-** Every generator is deterministic in (family, n, r, seed, weights), returns a
-** simple counter-clockwise polygon with exactly n vertices (and exactly r reflex
-** vertices where the family controls r), validated by wk_polygon_from_arrays,
+** Every generator is deterministic in (family, n, r, holes, seed, weights),
+** returns a simple polygon with exactly n vertices over 1 + holes rings (the
+** outer ring counter-clockwise, holes clockwise, as stored; exactly r reflex
+** vertices where the family controls r), validated by wk_polygon_from_rings,
 ** or fails with WK_EINPUT naming the parameter it cannot honour.
 ** See bench/README.md for what each family looks like and why it exists.
 */
@@ -18,8 +19,11 @@ typedef enum wk_weight_mode {
 } wk_weight_mode;
 
 typedef struct wk_gen_params {
-    const char *family; /* star comb spiral notched crossing random monotone rectilinear convex */
-    uint32_t n;         /* vertices */
+    const char *family; /* star comb spiral notched crossing random monotone rectilinear convex
+                           holes */
+    uint32_t n;         /* vertices, over all rings */
+    uint32_t holes;     /* holes wanted (default 0); only the families for which
+                           wk_gen_family_takes_holes is true take holes > 0 */
     int64_t r;          /* reflex vertices wanted; -1: the family's default */
     uint64_t seed;
     wk_weight_mode weights;
@@ -35,7 +39,7 @@ typedef struct wk_gen_params {
 ** above double rounding up to here (see bench/README.md). */
 #define WK_GEN_N_MAX 10000000u
 
-/* Defaults: r = -1, seed = 1, unit weights, wa = 0.5, wb = 2. */
+/* Defaults: r = -1, holes = 0, seed = 1, unit weights, wa = 0.5, wb = 2. */
 void wk_gen_params_init(wk_gen_params *g);
 /* Generate g's polygon; on success *out is owned by the caller (free with
 ** wk_polygon_free).  Failures leave *out NULL: WK_EUSAGE for an unknown
@@ -53,5 +57,7 @@ void wk_gen_weights_format(const wk_gen_params *g, char *buf, size_t size);
 extern const char *const wk_gen_families[];
 /* One-line description of a family (for --list); NULL if unknown. */
 const char *wk_gen_family_summary(const char *family);
+/* Whether the family takes holes > 0 (holes, convex); false if unknown. */
+bool wk_gen_family_takes_holes(const char *family);
 
 #endif
