@@ -1,10 +1,13 @@
 /*
 ** wskel_cgal.cpp: the CGAL baseline, bin/wskel-cgal.
 **
-** Reads a unit-weight .wpoly polygon, builds its interior straight skeleton
-** with CGAL::create_interior_straight_skeleton_2 (Exact_predicates_inexact_
-** constructions_kernel) and writes it in the wskel JSON contract
-** ("format":"wskel-1"), so scripts/compare_skeletons.py can hold wskel's
+** Reads a unit-weight .wpoly polygon, possibly with holes (further rings after
+** the first, each its own count line and vertex lines; the first ring is the
+** outer boundary; any ring in either orientation), builds its interior
+** straight skeleton with CGAL::create_interior_straight_skeleton_2
+** (Exact_predicates_inexact_constructions_kernel; the outer contour
+** counter-clockwise, the holes clockwise) and writes it in the wskel JSON
+** contract ("format":"wskel-1", with "rings"), so scripts/compare_skeletons.py can hold wskel's
 ** variants against it and the benchmarks can quote CGAL's time and memory.
 **
 ** What it is not: part of the library.  It links only CGAL, GMP and MPFR, so
@@ -13,15 +16,16 @@
 ** other than 1 is refused.
 **
 ** Numbering (the contract's, see engine/wskel.h):
-**   - nodes[0..n) are the input vertices in input line order at t = 0, even
-**     when the input is clockwise and CGAL was given the reversed copy;
+**   - nodes[0..n) are the input vertices in input line order over all rings
+**     (file order) at t = 0, even when a ring was handed to CGAL reversed;
 **   - the other nodes are CGAL's skeleton vertices in CGAL's order, t = time();
-**   - edge i runs from input vertex i to input vertex i+1 (mod n); a face is
+**   - edge i runs from input vertex i to the next input vertex of its ring
+**     (next(i) = i+1, or the ring's first vertex after its last); a face is
 **     named by its edge.  CGAL's face f is bounded by the contour halfedge
 **     f->halfedge() (the face lies on its left, i.e. inside the polygon); its
 **     two endpoints are input vertices a and b, and the edge joining them is
-**     a if b == a+1 (mod n) (counter-clockwise input), or b if a == b+1
-**     (the reversed copy of a clockwise input).  Deriving the id from the
+**     a if b == next(a) (the ring was given in CGAL's orientation), or b if
+**     a == next(b) (the reversed copy).  Deriving the id from the
 **     endpoints, not from CGAL's vertex ids, keeps this right however CGAL
 **     numbers its contour.
 **   - one arc per pair of opposite bisector halfedges, [a, b, left, right]:
@@ -37,6 +41,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -71,7 +76,22 @@ static Failure fail(int code, const std::string &msg) { return Failure{code, msg
 /* ----------------------------------------------------------------- input */
 
 struct Input {
-    std::vector<double> x, y; /* in input line order */
+    std::vector<double> x, y;       /* in input line order, over all rings */
+    std::vector<uint32_t> ring_start; /* ring k is [ring_start[k], ring_start[k+1]) */
+    uint32_t rings() const { return (uint32_t)ring_start.size() - 1; }
+    uint32_t next(uint32_t i) const {
+        size_t k = ring_of(i);
+        return i + 1 == ring_start[k + 1] ? ring_start[k] : i + 1;
+    }
+    size_t ring_of(uint32_t i) const {
+        size_t lo = 0, hi = ring_start.size() - 1; /* ring_start[lo] <= i < ring_start[hi] */
+        while (hi - lo > 1) {
+            size_t mid = (lo + hi) / 2;
+            if (ring_start[mid] <= i) lo = mid;
+            else hi = mid;
+        }
+        return lo;
+    }
 };
 
 /* Trim leading blanks; true if the line carries data (not blank, not '#'). */
@@ -107,7 +127,8 @@ static Failure read_wpoly(const std::string &path, Input *in) {
     if (!f) return fail(EXIT_INPUT, path + ": cannot open: " + std::strerror(errno));
     std::string line;
     long lineno = 0;
-    long n = -1;
+    long m = -1;      /* the current ring's vertex count; -1 before the first */
+    size_t got = 0;   /* vertices of the current ring so far */
     Failure res{0, ""};
     char buf[4096];
     /* Lines longer than buf are glued back together before parsing. */
@@ -121,31 +142,35 @@ static Failure read_wpoly(const std::string &path, Input *in) {
         lineno++;
         return true;
     };
+    in->ring_start.assign(1, 0);
     while (next_line(&line)) {
         if (!data_line(line.c_str())) continue;
         const char *s = line.c_str();
-        if (n < 0) {
+        if (m < 0 || (long)got == m) {
+            /* a count line: the outer ring's or a hole's */
             char *end;
             errno = 0;
             long v = std::strtol(s, &end, 10);
             if (end == s || !only_blanks(end) || errno == ERANGE) {
-                res = fail(EXIT_INPUT, where(path, lineno) + "expected the vertex count");
+                res = fail(EXIT_INPUT, where(path, lineno) +
+                                           (m < 0 ? "expected the vertex count"
+                                                  : "more than " + std::to_string(m) +
+                                                        " vertices (a hole starts with its own "
+                                                        "count line)"));
                 break;
             }
-            if (v < 3 || v > 100000000L) {
-                res = fail(EXIT_INPUT, where(path, lineno) + "vertex count must be in [3, 1e8] (got " +
-                                           std::to_string(v) + ")");
+            if (v < 3 || v > 100000000L || (long)in->x.size() + v > 100000000L) {
+                res = fail(EXIT_INPUT, where(path, lineno) +
+                                           (m < 0 ? "vertex count" : "vertex count of a hole") +
+                                           " must be in [3, 1e8] (got " + std::to_string(v) + ")");
                 break;
             }
-            n = v;
-            in->x.reserve((size_t)n);
-            in->y.reserve((size_t)n);
+            if (m >= 0) in->ring_start.push_back((uint32_t)in->x.size());
+            m = v;
+            got = 0;
+            in->x.reserve(in->x.size() + (size_t)m);
+            in->y.reserve(in->y.size() + (size_t)m);
             continue;
-        }
-        if ((long)in->x.size() == n) {
-            res = fail(EXIT_INPUT, where(path, lineno) + "more than " + std::to_string(n) +
-                                       " vertices");
-            break;
         }
         double x, y, w = 1.0;
         if (!parse_double(&s, &x) || !parse_double(&s, &y)) {
@@ -162,13 +187,15 @@ static Failure read_wpoly(const std::string &path, Input *in) {
         }
         in->x.push_back(x);
         in->y.push_back(y);
+        got++;
     }
     if (f != stdin) std::fclose(f);
     if (res.code) return res;
-    if (n < 0) return fail(EXIT_INPUT, path + ": no vertex count (empty file?)");
-    if ((long)in->x.size() != n)
-        return fail(EXIT_INPUT, where(path, lineno) + "expected " + std::to_string(n) +
-                                    " vertices, found " + std::to_string(in->x.size()));
+    if (m < 0) return fail(EXIT_INPUT, path + ": no vertex count (empty file?)");
+    if ((long)got != m)
+        return fail(EXIT_INPUT, where(path, lineno) + "expected " + std::to_string(m) +
+                                    " vertices, found " + std::to_string(got));
+    in->ring_start.push_back((uint32_t)in->x.size());
     return res;
 }
 
@@ -186,9 +213,14 @@ static void put_double(FILE *f, double v) {
     std::fprintf(f, "%.17g", v);
 }
 
-static void write_json(FILE *f, uint32_t n, uint32_t r, const std::vector<Node> &nodes,
+static void write_json(FILE *f, const Input &in, uint32_t r, const std::vector<Node> &nodes,
                        const std::vector<Arc> &arcs, double time_s, long peak_rss) {
-    std::fprintf(f, "{\"format\":\"wskel-1\",\"variant\":\"cgal\",\"k\":null,\"n\":%u,\"r\":%u,\n", n, r);
+    std::fprintf(f, "{\"format\":\"wskel-1\",\"variant\":\"cgal\",\"k\":null,\"n\":%zu,\"r\":%u,",
+                 in.x.size(), r);
+    std::fprintf(f, "\"rings\":[");
+    for (uint32_t k = 0; k < in.rings(); k++)
+        std::fprintf(f, "%s%u", k ? "," : "", in.ring_start[k + 1] - in.ring_start[k]);
+    std::fprintf(f, "],\n");
     std::fprintf(f, "\"nodes\":[");
     for (size_t i = 0; i < nodes.size(); i++) {
         std::fputs(i ? ",\n[" : "\n[", f);
@@ -217,39 +249,114 @@ struct Result {
     double time_s = 0;
 };
 
+/* Bounding box of ring k's points. */
+struct Box {
+    double x0, y0, x1, y1;
+    bool meets(const Box &o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+};
+static Box box_of(const std::vector<Point> &p) {
+    Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (const Point &q : p) {
+        b.x0 = std::min(b.x0, q.x()), b.y0 = std::min(b.y0, q.y());
+        b.x1 = std::max(b.x1, q.x()), b.y1 = std::max(b.y1, q.y());
+    }
+    return b;
+}
+static Box seg_box(const Point &a, const Point &b) {
+    return Box{std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.x(), b.x()),
+               std::max(a.y(), b.y())};
+}
+
+/* CGAL's builder assumes a valid polygon with holes and checks none of it:
+** each ring simple (build checks that), the rings pairwise disjoint (not even touching), every
+** hole strictly inside the outer ring and in no other hole.  Pairs of rings
+** are tested edge against edge where the bounding boxes meet (exact
+** predicates), so O(m_k m_l) for rings whose boxes overlap: fine at the
+** sizes this baseline is run at. */
+static Failure check_rings(const std::string &path, const std::vector<std::vector<Point>> &ring) {
+    std::vector<Box> boxes;
+    for (size_t k = 0; k < ring.size(); k++) boxes.push_back(box_of(ring[k]));
+    for (size_t k = 0; k < ring.size(); k++)
+        for (size_t l = k + 1; l < ring.size(); l++) {
+            if (!boxes[k].meets(boxes[l])) continue;
+            const std::vector<Point> &A = ring[k], &B = ring[l];
+            for (size_t i = 0; i < A.size(); i++) {
+                const Point &a0 = A[i], &a1 = A[(i + 1) % A.size()];
+                Box ba = seg_box(a0, a1);
+                if (!ba.meets(boxes[l])) continue;
+                for (size_t j = 0; j < B.size(); j++) {
+                    const Point &b0 = B[j], &b1 = B[(j + 1) % B.size()];
+                    if (ba.meets(seg_box(b0, b1)) &&
+                        CGAL::do_intersect(K::Segment_2(a0, a1), K::Segment_2(b0, b1)))
+                        return fail(EXIT_INPUT, path + ": rings " + std::to_string(k) + " and " +
+                                                    std::to_string(l) + " meet");
+                }
+            }
+        }
+    /* Disjoint rings: one vertex decides which contains which. */
+    for (size_t k = 1; k < ring.size(); k++) {
+        if (CGAL::bounded_side_2(ring[0].begin(), ring[0].end(), ring[k][0], K()) != CGAL::ON_BOUNDED_SIDE)
+            return fail(EXIT_INPUT, path + ": hole " + std::to_string(k) + " is not inside the outer ring");
+        for (size_t l = 1; l < ring.size(); l++)
+            if (l != k && boxes[l].meets(boxes[k]) &&
+                CGAL::bounded_side_2(ring[l].begin(), ring[l].end(), ring[k][0], K()) != CGAL::ON_UNBOUNDED_SIDE)
+                return fail(EXIT_INPUT, path + ": hole " + std::to_string(k) + " is inside hole " +
+                                            std::to_string(l));
+    }
+    return Failure{0, ""};
+}
+
 static Failure build(const std::string &path, const Input &in, Result *res) {
-    const uint32_t n = (uint32_t)in.x.size();
+    const uint32_t n = (uint32_t)in.x.size(), h = in.rings();
 
-    /* CGAL wants a counter-clockwise outer contour.  order[j] is the input
-    ** index of the j-th vertex handed to CGAL. */
-    Polygon poly;
-    for (uint32_t i = 0; i < n; i++) poly.push_back(Point(in.x[i], in.y[i]));
-    /* Simplicity is a precondition of CGAL's builder, not something it
-    ** checks; a crossing polygon yields garbage or a crash, so refuse it. */
-    if (!poly.is_simple())
-        return fail(EXIT_INPUT, path + ": polygon is not simple (edges cross, touch or repeat a vertex)");
-    std::vector<uint32_t> order(n);
-    bool reversed = poly.orientation() == CGAL::CLOCKWISE;
-    for (uint32_t j = 0; j < n; j++) order[j] = reversed ? n - 1 - j : j;
-    std::vector<Point> ccw;
-    ccw.reserve(n);
-    for (uint32_t j = 0; j < n; j++) ccw.push_back(Point(in.x[order[j]], in.y[order[j]]));
+    /* CGAL wants the outer contour counter-clockwise and the holes
+    ** clockwise; each ring is reversed if it came the other way. */
+    std::vector<std::vector<Point>> ring(h);
+    for (uint32_t k = 0; k < h; k++) {
+        uint32_t s0 = in.ring_start[k], m = in.ring_start[k + 1] - s0;
+        Polygon poly;
+        for (uint32_t i = 0; i < m; i++) poly.push_back(Point(in.x[s0 + i], in.y[s0 + i]));
+        /* Simplicity is a precondition of CGAL's builder, not something it
+        ** checks; a crossing polygon yields garbage or a crash, so refuse it. */
+        if (!poly.is_simple())
+            return fail(EXIT_INPUT, path + ": " + (k ? "hole " + std::to_string(k) : std::string("polygon")) +
+                                        " is not simple (edges cross, touch or repeat a vertex)");
+        bool reversed = poly.orientation() != (k == 0 ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE);
+        ring[k].reserve(m);
+        for (uint32_t j = 0; j < m; j++) {
+            uint32_t i = s0 + (reversed ? m - 1 - j : j);
+            ring[k].push_back(Point(in.x[i], in.y[i]));
+        }
+    }
+    if (h > 1) {
+        Failure e = check_rings(path, ring);
+        if (e.code) return e;
+    }
 
-    /* Reflex vertices, counted on the counter-clockwise copy with the exact
-    ** orientation predicate; collinear vertices are not reflex. */
-    for (uint32_t j = 0; j < n; j++)
-        if (CGAL::orientation(ccw[(j + n - 1) % n], ccw[j], ccw[(j + 1) % n]) == CGAL::RIGHT_TURN)
-            res->r++;
+    /* Reflex vertices, counted on the stored orientation (interior on the
+    ** left of every edge) with the exact orientation predicate; collinear
+    ** vertices are not reflex. */
+    for (uint32_t k = 0; k < h; k++) {
+        const std::vector<Point> &c = ring[k];
+        size_t m = c.size();
+        for (size_t j = 0; j < m; j++)
+            if (CGAL::orientation(c[(j + m - 1) % m], c[j], c[(j + 1) % m]) == CGAL::RIGHT_TURN)
+                res->r++;
+    }
+    std::vector<Polygon> holes;
+    for (uint32_t k = 1; k < h; k++) holes.push_back(Polygon(ring[k].begin(), ring[k].end()));
+    const std::vector<Point> &ccw = ring[0];
 
     auto t0 = std::chrono::steady_clock::now();
-    boost::shared_ptr<Ss> ss = CGAL::create_interior_straight_skeleton_2(ccw.begin(), ccw.end(), K());
+    boost::shared_ptr<Ss> ss = CGAL::create_interior_straight_skeleton_2(ccw.begin(), ccw.end(),
+                                                                         holes.begin(), holes.end(), K());
     auto t1 = std::chrono::steady_clock::now();
     res->time_s = std::chrono::duration<double>(t1 - t0).count();
     if (!ss) return fail(EXIT_ALGO, path + ": CGAL could not build the straight skeleton (null result)");
 
     /* Contour vertices are found by their exact coordinates: the polygon is
-    ** simple, so the input points are distinct, and CGAL copies them
-    ** unchanged. */
+    ** simple and its rings disjoint, so the input points are distinct, and
+    ** CGAL copies them unchanged. */
     std::map<std::pair<double, double>, uint32_t> input_of;
     for (uint32_t i = 0; i < n; i++) input_of[std::make_pair(in.x[i], in.y[i])] = i;
 
@@ -281,8 +388,8 @@ static Failure build(const std::string &path, const Input &in, Result *res) {
         Ss::Halfedge_const_handle h = f->halfedge();
         uint32_t a = node(h->opposite()->vertex()), b = node(h->vertex());
         if (a >= n || b >= n) return NONE;
-        if (b == (a + 1) % n) return a;
-        if (a == (b + 1) % n) return b;
+        if (b == in.next(a)) return a;
+        if (a == in.next(b)) return b;
         return NONE;
     };
 
@@ -311,7 +418,8 @@ static Failure build(const std::string &path, const Input &in, Result *res) {
 
 static void usage(FILE *f) {
     std::fputs("usage: wskel-cgal [--stats] [-o FILE] INPUT.wpoly\n"
-               "  CGAL's interior straight skeleton (unit weights only) as wskel-1 JSON.\n"
+               "  CGAL's interior straight skeleton (unit weights only; holes as further\n"
+               "  rings after the outer one) as wskel-1 JSON.\n"
                "  -o FILE   write to FILE (via FILE.tmp and a rename) instead of stdout\n"
                "  --stats   print n, r, nodes, arcs, time and peak RSS to stderr\n",
                f);
@@ -390,7 +498,7 @@ int main(int argc, char **argv) {
             std::fprintf(stderr, "wskel-cgal: %s: cannot write: %s\n", out.c_str(), std::strerror(errno));
             return EXIT_INPUT;
         }
-        write_json(f, (uint32_t)in.x.size(), res.r, res.nodes, res.arcs, res.time_s, rss);
+        write_json(f, in, res.r, res.nodes, res.arcs, res.time_s, rss);
         bool ok = !std::ferror(f);
         ok = (std::fclose(f) == 0) && ok;
         return ok ? 0 : EXIT_INPUT;
@@ -403,7 +511,7 @@ int main(int argc, char **argv) {
             return EXIT_INPUT;
         }
     }
-    write_json(f, (uint32_t)in.x.size(), res.r, res.nodes, res.arcs, res.time_s, rss);
+    write_json(f, in, res.r, res.nodes, res.arcs, res.time_s, rss);
     if (!out.empty()) {
         bool ok = !std::ferror(f);
         ok = (std::fclose(f) == 0) && ok;
