@@ -6,12 +6,13 @@
 ** first, each axis is asked for its number of values only when the axes
 ** outside it have theirs (so an axis may depend on them, as r on n and k on
 ** the variant and r), and an axis may leave a value out together with
-** everything inside it (the cgal filter).  The order is that of the nested
-** loops family > n > r > weights > seed > variant > k > repeat, which
-** existing CSVs and --resume rely on.
+** everything inside it (the holes and cgal filters).  The order is that of
+** the nested loops family > n > r > holes > weights > seed > variant > k >
+** repeat, which existing CSVs and --resume rely on.
 */
 #define _GNU_SOURCE
 #include "configs.h"
+#include "generators.h"
 #include "spec.h"
 
 #include <math.h>
@@ -90,6 +91,13 @@ static bool r_take(expansion *e, int i) {
     return true;
 }
 
+/* holes > 0 only for the families that take holes. */
+static int holes_count(expansion *e) { return e->o->holes.n; }
+static bool holes_take(expansion *e, int i) {
+    e->c.holes = (uint32_t)e->o->holes.v[i];
+    return e->c.holes == 0 || wk_gen_family_takes_holes(e->c.family);
+}
+
 static int weights_count(expansion *e) { return e->o->weights.n; }
 static bool weights_take(expansion *e, int i) {
     e->c.weights = e->o->weights.v[i];
@@ -133,7 +141,8 @@ static bool repeat_take(expansion *e, int i) {
 /* Outermost first: this order is the order of every configuration list. */
 static const axis axes[] = {
     {"family", family_count, family_take},    {"n", n_count, n_take},
-    {"r", r_count, r_take},                   {"weights", weights_count, weights_take},
+    {"r", r_count, r_take},                   {"holes", holes_count, holes_take},
+    {"weights", weights_count, weights_take},
     {"seed", seed_count, seed_take},          {"variant", variant_count, variant_take},
     {"k", k_count, k_take},                   {"repeat", repeat_count, repeat_take},
 };
@@ -180,6 +189,7 @@ void format_k(uint32_t k, char *buf, size_t size) {
 void config_key(const config *c, char *buf, size_t size) {
     char k[24];
     format_k(c->k, k, sizeof k);
-    snprintf(buf, size, "%s,%s,%u,%lld,%s,%s,%llu,%d", c->variant, c->family, c->n,
-             (long long)c->r_req, k, c->weights, (unsigned long long)c->seed, c->repeat);
+    snprintf(buf, size, "%s,%s,%u,%lld,%u,%s,%s,%llu,%d", c->variant, c->family, c->n,
+             (long long)c->r_req, c->holes, k, c->weights, (unsigned long long)c->seed,
+             c->repeat);
 }

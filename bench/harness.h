@@ -43,7 +43,7 @@ typedef struct r_req { double frac; int64_t abs; } r_req;
 
 typedef struct options {
     str_list families, variants, weights, k_spec;
-    u64_list n, seeds;
+    u64_list n, seeds, holes;
     r_req r[MAX_LIST];
     int n_r;
     int repeats;
@@ -68,6 +68,7 @@ typedef struct config {
     const char *weights;   /* canonical text */
     uint32_t n;
     int64_t r_req;         /* -1: the family's default */
+    uint32_t holes;        /* holes asked of the generator (0: none) */
     uint32_t k;
     uint64_t seed;
     int repeat;

@@ -41,8 +41,16 @@ static bool counter_value(const counter_columns *cc, uint32_t j, const wk_varian
 }
 
 static const char base_columns[] =
+    "variant,family,n,r_req,holes,k,weights,seed,repeat,r,status,signal,wall_s,cpu_s,"
+    "peak_rss_bytes,peak_tracked_bytes,nodes,arcs,crossings,validated";
+/* The columns of a CSV written before the holes axis: the same without
+** holes.  --resume reads such a file as holes = 0 everywhere and appends its
+** rows in the same columns (write_rows with legacy set). */
+static const char legacy_base_columns[] =
     "variant,family,n,r_req,k,weights,seed,repeat,r,status,signal,wall_s,cpu_s,"
     "peak_rss_bytes,peak_tracked_bytes,nodes,arcs,crossings,validated";
+#define KEY_FIELDS 9        /* config_key's fields */
+#define HOLES_FIELD 4       /* where holes sits among them */
 
 /* A growable string for one output row. */
 typedef struct sbuf { char *s; size_t len, cap; } sbuf;
@@ -88,9 +96,19 @@ static void sb_json_str(sbuf *b, const char *s) {
     sb_printf(b, "\"");
 }
 
-static void format_rows(const config *c, const result *r, sbuf *csv, sbuf *js) {
+/* The key without its holes field (legacy CSVs; holes is 0 there). */
+static void drop_holes_field(char *key) {
+    char *p = key;
+    for (int i = 0; i < HOLES_FIELD && p; i++) p = strchr(p + (i ? 1 : 0), ',');
+    if (!p) return;
+    char *q = strchr(p + 1, ',');
+    if (q) memmove(p, q, strlen(q) + 1);
+}
+
+static void format_rows(const config *c, const result *r, bool legacy, sbuf *csv, sbuf *js) {
     char key[512], k[24];
     config_key(c, key, sizeof key);
+    if (legacy) drop_holes_field(key);
     format_k(c->k, k, sizeof k);
     counter_columns cc;
     counter_columns_get(&cc);
@@ -122,7 +140,8 @@ static void format_rows(const config *c, const result *r, sbuf *csv, sbuf *js) {
     sb_json_str(js, c->variant);
     sb_printf(js, ",\"family\":");
     sb_json_str(js, c->family);
-    sb_printf(js, ",\"n\":%u,\"r_req\":%lld,\"k\":", c->n, (long long)c->r_req);
+    sb_printf(js, ",\"n\":%u,\"r_req\":%lld,\"holes\":%u,\"k\":", c->n, (long long)c->r_req,
+              c->holes);
     if (c->k == K_NA) sb_printf(js, "null");
     else sb_json_str(js, k);
     sb_printf(js, ",\"weights\":");
@@ -215,7 +234,8 @@ void machine_header(FILE *f, int argc, char **argv, const options *o, long total
             o->time_limit, o->mem_limit_mb, o->validate ? "on" : "off", o->jobs, o->shard_i,
             o->shard_n, total, todo);
     fprintf(f, "# columns: variant, family, n (vertices asked), r_req (reflex asked, -1: family "
-               "default), k (empty: variant has no k), weights, seed, repeat: the configuration;\n"
+               "default), holes (asked), k (empty: variant has no k), weights, seed, repeat: the "
+               "configuration;\n"
                "#   r: actual reflex vertices; status: ok|timeout|out-of-memory|crash|invalid|"
                "rejected|unsupported|algo-failed; signal: for crash;\n"
                "#   wall_s, cpu_s: the construction alone (cgal: its reported time, no cpu); "
@@ -254,9 +274,11 @@ void trim_partial(const char *path) {
         fprintf(stderr, "wskel-bench: %s: cannot truncate: %s\n", path, strerror(errno));
 }
 
-/* Keys of the rows already in path (resume). */
-static char **read_done_keys(const char *path, long *count) {
+/* Keys of the rows already in path (resume); *legacy: the file has the
+** columns of before the holes axis (its keys get holes = 0). */
+static char **read_done_keys(const char *path, long *count, bool *legacy) {
     *count = 0;
+    *legacy = false;
     FILE *f = fopen(path, "r");
     if (!f) return NULL;
     size_t cap = 256;
@@ -276,18 +298,34 @@ static char **read_done_keys(const char *path, long *count) {
         if (line[0] == '#' || line[0] == '\n') continue;
         if (!header_seen) {
             header_seen = true;
-            if (strncmp(line, base_columns, strlen(base_columns)) != 0) {
+            if (!strncmp(line, legacy_base_columns, strlen(legacy_base_columns)))
+                *legacy = true;
+            else if (strncmp(line, base_columns, strlen(base_columns)) != 0) {
                 fprintf(stderr, "wskel-bench: %s: not a wskel-bench CSV of this version\n", path);
                 exit(1);
             }
             continue;
         }
-        /* the key is the first 8 fields (none of them contains a comma) */
+        /* the key is the first 9 fields (8 in a legacy file; none of them
+        ** contains a comma) */
+        int fields = *legacy ? KEY_FIELDS - 1 : KEY_FIELDS;
         char *p = line;
-        for (int i = 0; i < 8 && p; i++) p = strchr(p + (i ? 1 : 0), ',');
+        for (int i = 0; i < fields && p; i++) p = strchr(p + (i ? 1 : 0), ',');
         if (!p) continue;
         if ((size_t)*count == cap) keys = xreallocarray(keys, cap *= 2, sizeof *keys);
-        keys[(*count)++] = xstrndup(line, (size_t)(p - line));
+        if (*legacy) {
+            /* insert ",0" after the r_req field */
+            char *q = line;
+            for (int i = 0; i < HOLES_FIELD && q; i++) q = strchr(q + (i ? 1 : 0), ',');
+            size_t head = (size_t)(q - line), tail = (size_t)(p - q);
+            char *k = xmalloc(head + 2 + tail + 1);
+            memcpy(k, line, head);
+            memcpy(k + head, ",0", 2);
+            memcpy(k + head + 2, q, tail);
+            k[head + 2 + tail] = 0;
+            keys[(*count)++] = k;
+        } else
+            keys[(*count)++] = xstrndup(line, (size_t)(p - line));
     }
     fclose(f);
     return keys;
@@ -298,7 +336,7 @@ static int cmp_str(const void *a, const void *b) {
 }
 
 void done_set_read(done_set *d, const char *path) {
-    d->keys = read_done_keys(path, &d->n);
+    d->keys = read_done_keys(path, &d->n, &d->legacy);
     if (d->n) qsort(d->keys, (size_t)d->n, sizeof *d->keys, cmp_str);
 }
 
@@ -319,9 +357,9 @@ void write_resume_line(FILE *f, long todo, long shard, const char *argv0) {
     fprintf(f, "# resumed %ld of %ld configurations left, by: %s\n", todo, shard, argv0);
 }
 
-void write_rows(FILE *csv, FILE *js, const config *c, const result *r) {
+void write_rows(FILE *csv, FILE *js, const config *c, const result *r, bool legacy) {
     sbuf a = {0}, b = {0};
-    format_rows(c, r, &a, &b);
+    format_rows(c, r, legacy, &a, &b);
     fputs(a.s, csv);
     fputs(b.s, js);
     fflush(csv);

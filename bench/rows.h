@@ -6,7 +6,8 @@
 ** generator version, command, limits, the meaning of the columns), the
 ** header row, then one row per run:
 **
-**   variant,family,n,r_req,k,weights,seed,repeat   the configuration (its key)
+**   variant,family,n,r_req,holes,k,weights,seed,repeat   the configuration
+**                                                  (its key)
 **   r,status,signal,wall_s,cpu_s,peak_rss_bytes,peak_tracked_bytes,
 **   nodes,arcs,crossings,validated                 the result
 **   one column per counter name of the union over the variant registry
@@ -22,8 +23,13 @@
 ** variant; a row is formatted wholly in memory, then written and flushed
 ** (both files) before the next one, so an interrupted sweep leaves whole
 ** rows plus at most one partial last line, which trim_partial removes; the
-** key of a row (its first eight fields, no comma inside) is config_key of
+** key of a row (its first nine fields, no comma inside) is config_key of
 ** its configuration, which is what --resume matches.
+**
+** CSVs written before the holes axis (no holes column: the committed
+** baselines) are read by --resume as holes = 0 on every row (done_set.legacy),
+** and a resumed sweep appends its rows to them in their columns, without
+** holes; it refuses to (exit 1) when a configuration to run has holes > 0.
 */
 #ifndef WSKEL_BENCH_ROWS_H
 #define WSKEL_BENCH_ROWS_H
@@ -44,8 +50,9 @@ void write_header_row(FILE *f);
 /* The comment line a resumed sweep starts with. */
 void write_resume_line(FILE *f, long todo, long shard, const char *argv0);
 
-/* Format the run's CSV row and JSON line, write them and flush both. */
-void write_rows(FILE *csv, FILE *js, const config *c, const result *r);
+/* Format the run's CSV row and JSON line, write them and flush both;
+** legacy: the CSV row without the holes column (a resumed legacy file). */
+void write_rows(FILE *csv, FILE *js, const config *c, const result *r, bool legacy);
 
 /* Cut a file back to its last newline (a run interrupted mid-write leaves a
 ** partial line, which must not glue onto the next row). */
@@ -57,6 +64,7 @@ void trim_partial(const char *path);
 typedef struct done_set {
     char **keys; /* sorted */
     long n;
+    bool legacy; /* the CSV has no holes column (keys read with holes = 0) */
 } done_set;
 void done_set_read(done_set *d, const char *path);
 bool done_set_has(const done_set *d, const config *c);

@@ -115,6 +115,7 @@ static void child_main(const options *o, const config *c, int fd, const char *cg
     g.family = c->family;
     g.n = c->n;
     g.r = c->r_req;
+    g.holes = c->holes;
     g.seed = c->seed;
     limit_child(o);
     wk_status st = wk_gen_parse_weights(&R, c->weights, &g);

@@ -22,6 +22,8 @@ const char bench_usage_text[] =
     "  --n N,..            vertex counts; A..B:C gives C values geometric from A to B\n"
     "  --r R,..            reflex vertices: absolute, a fraction of n ('0.25n'),\n"
     "                      or 'default' (the family's rule; the default)\n"
+    "  --holes H,..        holes (default 0); H > 0 only for the families that take\n"
+    "                      holes (holes, convex), left out for the others\n"
     "  --k K,..            cache sizes: integers, 'pow2' (1,2,4.. up to r), 'max'\n"
     "                      (only variants that use k; default 1)\n"
     "  --variant V,..      registered variants (--list-variants) and 'cgal'\n"
@@ -170,6 +172,14 @@ void set_option(options *o, const char *key, const char *val) {
     else if (!strcmp(key, "k")) split_list(val, &o->k_spec);
     else if (!strcmp(key, "n")) parse_u64_list(key, val, &o->n);
     else if (!strcmp(key, "seeds")) parse_u64_list(key, val, &o->seeds);
+    else if (!strcmp(key, "holes")) {
+        parse_u64_list(key, val, &o->holes);
+        for (int i = 0; i < o->holes.n; i++)
+            if (o->holes.v[i] >= WK_POLYGON_MAX_RINGS)
+                die_usage("--holes: %llu is too many (at most %u)",
+                          (unsigned long long)o->holes.v[i], WK_POLYGON_MAX_RINGS - 1);
+        if (o->holes.n == 0) die_usage("--holes: no value");
+    }
     else if (!strcmp(key, "seeds-count")) {
         uint64_t c = parse_u64(key, val);
         if (c < 1 || c > MAX_LIST) die_usage("--seeds-count: 1..%d", MAX_LIST);
@@ -243,6 +253,8 @@ void options_init(options *o) {
     split_list("1", &o->k_spec);
     o->seeds.n = 1;
     o->seeds.v[0] = 1;
+    o->holes.n = 1;
+    o->holes.v[0] = 0;
     o->n_r = 1;
     o->r[0] = (r_req){0, -1};
 }

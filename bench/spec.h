@@ -3,7 +3,7 @@
 ** flags and spec files (--spec FILE, bench/sweeps/).
 **
 ** Spec file format: one "key = value" per line, keys as the long flags
-** without "--" (family, n, r, k, variant, weights, seeds, seeds-count,
+** without "--" (family, n, r, holes, k, variant, weights, seeds, seeds-count,
 ** repeats, cgal-max-n, time-limit, mem-limit, validate, jobs, shard, resume,
 ** quiet, out, self-test); '#' starts a comment (to the end of the line);
 ** blank lines are ignored; spaces and tabs around keys and values are
@@ -28,7 +28,7 @@
 /* --help. */
 extern const char bench_usage_text[];
 
-/* The defaults: variant naive, weights unit, k 1, seed 1, r default,
+/* The defaults: variant naive, weights unit, k 1, seed 1, r default, holes 0,
 ** repeats 1, time limit 60 s, memory limit 4096 MB, one job, shard 0/1. */
 void options_init(options *o);
 

@@ -1,8 +1,8 @@
 /*
 ** wskel_bench.c: bin/wskel-bench, the benchmark harness.
 **
-** A sweep is the cross product of families x n x r x weights x seeds x
-** variants x k x repeats, given by flags or by a spec file (bench/sweeps/,
+** A sweep is the cross product of families x n x r x holes x weights x seeds
+** x variants x k x repeats, given by flags or by a spec file (bench/sweeps/,
 ** "key = value" lines with the flags' names: spec.h).  Every configuration
 ** (configs.h) runs in its own forked child under setrlimit limits
 ** (runner.h); the rows go to a CSV and its JSON-lines twin (rows.h).  The
@@ -59,7 +59,8 @@ enum { N_STATUS = sizeof status_names / sizeof status_names[0] };
 ** results and ready have n_todo zeroed slots; counts[s] gets the number of
 ** runs with status_names[s]. */
 static void run_sweep(const options *o, const config *todo, long n_todo, const char *cgal_bin,
-                      result *results, bool *ready, FILE *csv, FILE *js, long counts[N_STATUS]) {
+                      result *results, bool *ready, FILE *csv, FILE *js, bool legacy,
+                      long counts[N_STATUS]) {
     bool tty = !o->quiet && isatty(2);
     double t0 = now_s();
     long finished = 0, next_emit = 0;
@@ -88,7 +89,7 @@ static void run_sweep(const options *o, const config *todo, long n_todo, const c
             for (int s = 0; s < N_STATUS; s++)
                 if (!strcmp(results[i].status, status_names[s])) counts[s]++;
             while (next_emit < n_todo && ready[next_emit]) {
-                write_rows(csv, js, &todo[next_emit], &results[next_emit]);
+                write_rows(csv, js, &todo[next_emit], &results[next_emit], legacy);
                 next_emit++;
             }
         }
@@ -109,7 +110,7 @@ int main(int argc, char **argv) {
     long total;
     config *all = build_configs(&o, &total);
     /* This shard, minus what is done. */
-    done_set done = {NULL, 0};
+    done_set done = {NULL, 0, false};
     if (o.resume && o.out[0]) {
         trim_partial(o.out);
         done_set_read(&done, o.out);
@@ -130,6 +131,15 @@ int main(int argc, char **argv) {
         return 0;
     }
     if (!o.out[0]) die_usage("no --out");
+    /* A CSV of before the holes axis can take only rows with holes = 0. */
+    for (long i = 0; done.legacy && i < n_todo; i++)
+        if (todo[i].holes > 0) {
+            fprintf(stderr,
+                    "wskel-bench: %s: written before the holes column: --resume cannot add "
+                    "configurations with holes > 0 to it; remove it or choose another --out\n",
+                    o.out);
+            return 1;
+        }
 
     /* Allocated before the output is opened: out of memory leaves it as it was. */
     result *results = xcalloc((size_t)n_todo + 1, sizeof *results);
@@ -155,7 +165,7 @@ int main(int argc, char **argv) {
 
     double t0 = now_s();
     long counts[N_STATUS] = {0};
-    run_sweep(&o, todo, n_todo, cgal_bin, results, ready, csv, js, counts);
+    run_sweep(&o, todo, n_todo, cgal_bin, results, ready, csv, js, done.legacy, counts);
     char el[32];
     fmt_dur(now_s() - t0, el, sizeof el);
     if (!o.quiet) {

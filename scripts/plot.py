@@ -123,15 +123,15 @@ def plot_memory_vs_n(rows, outdir, written):
 
 
 def k_groups(rows):
-    """(variant, family, n, r_req, weights) groups with two or more k values."""
+    """(variant, family, n, r_req, holes, weights) groups with two or more k values."""
     groups = group_by([r for r in rows if r["k"] != ""],
-                      ("variant", "family", "n", "r_req", "weights"))
+                      ("variant", "family", "n", "r_req", "holes", "weights"))
     out = {g: rs for g, rs in groups.items() if len({r["k"] for r in rs}) >= 2}
-    # Keep one n per (variant, family, r_req, weights): the one with the most
-    # k values (a k sweep beats a k = 1 / max pair), then the largest n.
+    # Keep one n per (variant, family, r_req, holes, weights): the one with
+    # the most k values (a k sweep beats a k = 1 / max pair), then the largest n.
     best = {}
     for g in out:
-        key = (g[0], g[1], g[3], g[4])
+        key = (g[0], g[1], g[3], g[4], g[5])
         score = (len({r["k"] for r in out[g]}), g[2])
         if key not in best or score > best[key][0]:
             best[key] = (score, g)
@@ -153,9 +153,10 @@ def plot_k(rows, outdir, written):
         return "k_effect, k_tradeoff: skipped (no variant with two or more k values)"
     fig, axes = plt.subplots(1, 2, figsize=(13, 5))
     fig2, ax2 = plt.subplots(figsize=(7, 5.5))
-    for (var, fam, n, r_req, w), rs in groups.items():
+    for (var, fam, n, r_req, h, w), rs in groups.items():
         kk, x, t, m = k_points(rs)
-        label = "%s %s n=%d r=%s %s" % (var, fam, n, "default" if r_req == -1 else r_req, w)
+        label = "%s %s n=%d r=%s%s %s" % (var, fam, n, "default" if r_req == -1 else r_req,
+                                          " holes=%d" % h if h else "", w)
         axes[0].plot(x, t, marker="o", label=label)
         axes[1].plot(x, m, marker="o", label=label)
         ax2.plot(m, t, marker="o", label=label)

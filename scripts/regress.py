@@ -4,7 +4,8 @@
 usage: regress.py RUN.csv BASELINE.csv [--time-tol 2.0] [--min-time 0.05] [--all]
                   [--confirm BENCH] [--confirm-rounds 3]
 
-Per configuration (results.CONFIG_COLS but repeat; repeats grouped):
+Per configuration (results.CONFIG_COLS but repeat; repeats grouped; a CSV
+without the holes column, such as a baseline written before it, has holes 0):
   - status, r, nodes, arcs and every counter must be equal: they are
     deterministic (counts only, ties broken by ids), so any difference means
     the algorithm now does different work.  An empty counter cell (the
@@ -57,7 +58,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from results import cell, config_key, counter_columns, group_by, load_csv  # noqa: E402
 
 REFERENCE = {"variant": "naive", "family": "star", "n": 3000, "weights": "unit", "seed": 1,
-             "r_req": -1}
+             "r_req": -1, "holes": 0}
 TRACKED_TOL = 0.01
 
 
@@ -77,11 +78,13 @@ def reference_time(rows):
 def bench_args(key, repeats=5):
     """wskel-bench options that run exactly the configuration key (as
     config_key(row, drop=("repeat",)) gives it)."""
-    v, fam, n, rr, k, w, s = key
+    v, fam, n, rr, h, k, w, s = key
     a = ["--variant", v, "--family", fam, "--n", n, "--weights", w, "--seeds", s,
          "--repeats", str(repeats), "--quiet"]
     if rr != "-1":
         a += ["--r", rr]
+    if h != "0":
+        a += ["--holes", h]
     if k != "":
         a += ["--k", k]
     return a
@@ -97,9 +100,10 @@ def rerun(bench, key, tmpdir, tag):
 
 
 def fmt_key(key):
-    v, fam, n, rr, k, w, s = key
-    return "%s %s n=%s%s%s %s s%s" % (v, fam, n, "" if rr == "-1" else " r=" + rr,
-                                      "" if k == "" else " k=" + k, w, s)
+    v, fam, n, rr, h, k, w, s = key
+    return "%s %s n=%s%s%s%s %s s%s" % (v, fam, n, "" if rr == "-1" else " r=" + rr,
+                                        "" if h == "0" else " holes=" + h,
+                                        "" if k == "" else " k=" + k, w, s)
 
 
 def main():

@@ -6,6 +6,11 @@ harness's CSV through this module, so the format is understood in one place:
   - '#' lines are comments (the machine and build header), returned apart;
   - the configuration is CONFIG_COLS, the same columns, in the same order and
     spelling, as wskel-bench's resume and --dry-run key (config_text);
+  - CSVs written before the holes axis (no `holes` column, e.g. the
+    committed results/baseline/regress.csv) load with holes = 0 on every
+    row, inserted after r_req as if the column had been there; config_key
+    and config_text give a missing holes (a raw row or JSON line of such a
+    file) the same default, so old and new files key alike;
   - the counter columns are the ones between `validated` and `message`.  They
     are the union of the variants' declared counters, and a counter that a
     row's variant does not have is an empty cell, loaded as None (absent).
@@ -19,8 +24,11 @@ for the model, group-by helpers and the log-log slope.  Plain Python only.
 import csv
 import math
 
-CONFIG_COLS = ("variant", "family", "n", "r_req", "k", "weights", "seed", "repeat")
-INT_COLS = {"n", "r_req", "seed", "repeat", "r", "signal", "peak_rss_bytes",
+CONFIG_COLS = ("variant", "family", "n", "r_req", "holes", "k", "weights", "seed", "repeat")
+# Configuration columns a CSV may lack (older harness versions), with the
+# value they had implicitly.
+CONFIG_DEFAULTS = {"holes": 0}
+INT_COLS = {"n", "r_req", "holes", "seed", "repeat", "r", "signal", "peak_rss_bytes",
             "peak_tracked_bytes", "nodes", "arcs", "crossings", "validated"}
 FLOAT_COLS = {"wall_s", "cpu_s"}
 
@@ -77,11 +85,30 @@ def load_csv(path):
     raw_comments, header, raw_rows = read_raw(path)
     comments = [c[1:].strip() for c in raw_comments]
     ints = INT_COLS | set(_counters(header))
+    missing = [c for c in CONFIG_DEFAULTS if header and c not in header]
     rows = []
     for i, cells in enumerate(raw_rows, 1):
         cells = cells + [""] * (len(header) - len(cells))
-        rows.append({key: _convert(path, i, key, val, ints) for key, val in zip(header, cells)})
+        row = {key: _convert(path, i, key, val, ints) for key, val in zip(header, cells)}
+        if missing:
+            row = _with_defaults(row, missing)
+        rows.append(row)
     return comments, rows
+
+
+def _with_defaults(row, missing):
+    """row with the missing configuration columns added at their place in
+    CONFIG_COLS (after the column before them), holding their defaults."""
+    out = {}
+    for key, val in row.items():
+        out[key] = val
+        for c in missing:
+            i = CONFIG_COLS.index(c)
+            if i > 0 and CONFIG_COLS[i - 1] == key:
+                out[c] = CONFIG_DEFAULTS[c]
+    for c in missing:
+        out.setdefault(c, CONFIG_DEFAULTS[c])
+    return out
 
 
 def cell(v):
@@ -92,7 +119,8 @@ def cell(v):
 def config_key(row, drop=()):
     """The configuration of a row (loaded, raw dict or JSON line) as a tuple
     of cell texts; drop leaves columns out (regress groups repeats: "repeat")."""
-    return tuple(cell(row[c]) for c in CONFIG_COLS if c not in drop)
+    return tuple(cell(row[c] if c in row else CONFIG_DEFAULTS[c])
+                 for c in CONFIG_COLS if c not in drop)
 
 
 def config_text(row):

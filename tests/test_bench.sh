@@ -9,7 +9,11 @@
 #      uninterrupted sweep (configuration, status and counter columns);
 #   3. shards 0/3, 1/3, 2/3 cover every configuration exactly once, and
 #      merge_shards.py puts them back together;
-#   4. regress.py passes on an honest baseline and fails on doctored ones.
+#   4. regress.py passes on an honest baseline and fails on doctored ones;
+#   5. the holes axis: holes > 0 left out for families without holes,
+#      'unsupported' for monotone, the spec key; a CSV of before the holes
+#      column resumes as holes = 0 and keeps its columns, and regress.py
+#      compares a new run with such a baseline.
 set -u
 PY=/usr/bin/python3
 BENCH=bin/wskel-bench
@@ -20,8 +24,8 @@ pass() { echo "ok   $1"; }
 fail() { echo "FAIL $1"; fails=$((fails + 1)); }
 check() { if eval "$2"; then pass "$1"; else fail "$1"; fi; }
 
-# status of the row for seed S (column 7) in CSV
-status_of() { grep -v '^#' "$1" | awk -F, -v s="$2" 'NR > 1 && $7 == s { print $10 }'; }
+# status of the row for seed S (column 8) in CSV
+status_of() { grep -v '^#' "$1" | awk -F, -v s="$2" 'NR > 1 && $8 == s { print $11 }'; }
 # configuration, r, status, nodes, arcs, crossings, validated and counters:
 # everything but times and memory, which differ between runs
 stable_cols() {
@@ -42,7 +46,7 @@ EOF
 base=(--family star --n 100 --seeds 1..3 --quiet --validate)
 $BENCH "${base[@]}" --self-test crash:1 --out "$T/crash.csv"
 check "crash: status crash, signal 11" \
-    '[ "$(status_of $T/crash.csv 2)" = crash ] && grep -q "^naive,star,100,-1,,unit,2,0,[0-9]*,crash,11," $T/crash.csv'
+    '[ "$(status_of $T/crash.csv 2)" = crash ] && grep -q "^naive,star,100,-1,0,,unit,2,0,[0-9]*,crash,11," $T/crash.csv'
 check "crash: the sweep continues" \
     '[ "$(status_of $T/crash.csv 1)" = ok ] && [ "$(status_of $T/crash.csv 3)" = ok ]'
 start=$(date +%s)
@@ -57,8 +61,8 @@ check "oom: the sweep continues" \
     '[ "$(status_of $T/oom.csv 1)" = ok ] && [ "$(status_of $T/oom.csv 3)" = ok ]'
 $BENCH --family notched --n 100 --r 90,10 --quiet --out "$T/rej.csv"
 check "rejected: impossible generator parameters" \
-    'grep -q "^naive,notched,100,90,,unit,1,0,0,rejected,.*r=90 > n/2=50" $T/rej.csv'
-check "rejected: the sweep continues" 'grep -q "^naive,notched,100,10,,unit,1,0,10,ok," $T/rej.csv'
+    'grep -q "^naive,notched,100,90,0,,unit,1,0,0,rejected,.*r=90 > n/2=50" $T/rej.csv'
+check "rejected: the sweep continues" 'grep -q "^naive,notched,100,10,0,,unit,1,0,10,ok," $T/rej.csv'
 $BENCH --family star,monotone --n 100 --variant monotone --quiet --out "$T/uns.csv"
 check "unsupported: monotone on a star polygon" \
     'grep -q "^monotone,star,100,.*,unsupported,.*not monotone in any direction" $T/uns.csv'
@@ -186,6 +190,52 @@ check "a burst of load in the sweep fails without --confirm" \
     '! $PY scripts/regress.py $T/slow_run.csv $T/base.csv --min-time 0.005 > $T/r6.txt && grep -q "REGRESSION: time x" $T/r6.txt'
 check "... and passes once re-measured (--confirm)" \
     '$PY scripts/regress.py $T/slow_run.csv $T/base.csv --min-time 0.005 --confirm $BENCH --confirm-rounds 2 > $T/r7.txt && grep -q "re-measured" $T/r7.txt'
+
+# ---- 5. holes
+# drop_holes IN OUT: the CSV as written before the holes column
+drop_holes() {
+    $PY - "$1" "$2" <<'EOF'
+import csv, sys
+lines = open(sys.argv[1]).read().splitlines(True)
+rows = list(csv.reader([l for l in lines if not l.startswith("#")]))
+i = rows[0].index("holes")
+with open(sys.argv[2], "w", newline="") as f:
+    f.writelines(l for l in lines if l.startswith("#"))
+    w = csv.writer(f, lineterminator="\n")
+    for r in rows:
+        w.writerow(r[:i] + r[i + 1:])
+EOF
+}
+$BENCH --family star,holes,convex --n 60 --holes 0,3 --variant naive,monotone --quiet --validate \
+    --out "$T/holes.csv"
+check "holes: 0 and 3 for holes and convex, 0 only for star (10 rows)" \
+    '[ $(grep -vc "^#" $T/holes.csv) = 11 ] && ! grep -q "^[a-z]*,star,60,-1,3," $T/holes.csv'
+check "holes: naive ok with 3 holes" \
+    'grep -q "^naive,holes,60,-1,3,,unit,1,0,[0-9]*,ok," $T/holes.csv && grep -q "^naive,convex,60,-1,3,,unit,1,0,30,ok," $T/holes.csv'
+check "holes: monotone refuses holes (unsupported)" \
+    'grep -q "^monotone,holes,60,-1,3,.*,unsupported,.*hole" $T/holes.csv && grep -q "^monotone,convex,60,-1,0,,unit,1,0,0,ok," $T/holes.csv'
+check "holes: the JSON twin has holes" \
+    'grep -q "\"family\":\"convex\",\"n\":60,\"r_req\":-1,\"holes\":3," $T/holes.jsonl'
+printf 'family = holes\nn = 40\nholes = 1, 2\n' > "$T/holes.spec"
+check "holes: spec key" \
+    '[ "$($BENCH --spec $T/holes.spec --dry-run | cut -d" " -f2 | tr "\n" " ")" = "naive,holes,40,-1,1,,unit,1,0 naive,holes,40,-1,2,,unit,1,0 " ]'
+check "holes: the default is 0" \
+    '$BENCH --family star --n 50 --dry-run | grep -qx "0 naive,star,50,-1,0,,unit,1,0"'
+check "holes: a bad value is a usage error (64)" \
+    '$BENCH --family holes --n 40 --holes x --dry-run 2>/dev/null; [ $? = 64 ]'
+drop_holes "$T/full.csv" "$T/legacy.csv"
+check "legacy CSV (no holes column): resume of the finished sweep runs nothing" \
+    '$BENCH "${sweep[@]}" --resume --dry-run --out $T/legacy.csv | wc -l | grep -qx 0'
+n_hdr=$(grep -c '^#' "$T/legacy.csv")
+head -n $((n_hdr + 1 + 20)) "$T/legacy.csv" > "$T/legacy2.csv"
+$BENCH "${sweep[@]}" --resume --out "$T/legacy2.csv"
+check "legacy CSV: resume appends rows in its columns, the same rows as a fresh sweep" \
+    '[ "$(grep -v "^#" $T/legacy2.csv | awk -F, "{print NF}" | sort -u | wc -l)" = 1 ] && cmp -s <(stable_cols $T/legacy2.csv) $T/full.stable'
+check "legacy CSV: resume refuses holes > 0" \
+    '! $BENCH --family star,comb,spiral,holes --n 100 --holes 0,2 --resume --out $T/legacy2.csv 2>$T/leg.err && grep -q "before the holes column" $T/leg.err'
+drop_holes "$T/base.csv" "$T/base_legacy.csv"
+check "legacy CSV: regress.py compares a new run with it (holes = 0)" \
+    '$PY scripts/regress.py $T/run.csv $T/base_legacy.csv --time-tol 3 > $T/r8.txt && grep -q "0 regressions" $T/r8.txt'
 
 # ---- usage errors
 check "unknown variant is a usage error (64)" \

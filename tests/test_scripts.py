@@ -46,7 +46,7 @@ def model_time(n, r, k):
 
 def make_row(variant, family, n, k="", seed=1, repeat=0, weights="unit", wall=None):
     r = n // 3
-    row = {"variant": variant, "family": family, "n": n, "r_req": -1, "k": k,
+    row = {"variant": variant, "family": family, "n": n, "r_req": -1, "holes": 0, "k": k,
            "weights": weights, "seed": seed, "repeat": repeat, "r": r, "status": "ok",
            "signal": None, "wall_s": wall if wall is not None else model_time(n, r, k),
            "cpu_s": 0.001, "peak_rss_bytes": 1000 * n, "peak_tracked_bytes": 100 * n + 7,
@@ -104,7 +104,7 @@ def test_loader_comments_and_types():
     n, a = rows
     assert n["n"] == 100 and n["r_req"] == -1 and n["k"] == "" and a["k"] == "max"
     assert isinstance(n["wall_s"], float) and n["signal"] is None and n["message"] == ""
-    assert list(n)[:8] == list(results.CONFIG_COLS), list(n)
+    assert list(n)[:9] == list(results.CONFIG_COLS), list(n)
 
 
 def test_loader_empty_counters_are_none():
@@ -130,7 +130,7 @@ def test_loader_rejects_bad_integer_and_pads_short_rows():
         assert "edge_events" in str(e), e
     with open(path, "w") as f:
         f.write(",".join(list(results.CONFIG_COLS) + MID + ["message"]) + "\n")
-        f.write("naive,star,100,-1,,unit,1,0,33\n")
+        f.write("naive,star,100,-1,0,,unit,1,0,33\n")
     _, rows = results.load_csv(path)
     assert rows[0]["r"] == 33 and rows[0]["nodes"] is None and rows[0]["message"] == ""
 
@@ -143,13 +143,42 @@ def test_config_key_one_definition():
     as_json = dict(loaded, k=8)
     keys = {results.config_key(loaded), results.config_key(dict(zip(header, raw))),
             results.config_key(as_json)}
-    assert keys == {("arrangement", "star", "300", "-1", "8", "unit", "2", "1")}, keys
+    assert keys == {("arrangement", "star", "300", "-1", "0", "8", "unit", "2", "1")}, keys
     # wskel-bench's --dry-run / --resume key, with JSON's null k as the empty cell
-    j = {"variant": "naive", "family": "comb", "n": 40, "r_req": -1, "k": None,
+    j = {"variant": "naive", "family": "comb", "n": 40, "r_req": -1, "holes": 2, "k": None,
          "weights": "unit", "seed": 3, "repeat": 0}
-    assert results.config_text(j) == "naive,comb,40,-1,,unit,3,0", results.config_text(j)
+    assert results.config_text(j) == "naive,comb,40,-1,2,,unit,3,0", results.config_text(j)
+    del j["holes"]  # a JSON line of a file written before the holes axis
+    assert results.config_text(j) == "naive,comb,40,-1,0,,unit,3,0", results.config_text(j)
     assert results.config_key(loaded, drop=("repeat",))[-1] == "2"
 
+
+
+def test_csv_without_holes_column_loads_as_holes_0():
+    """A CSV of before the holes axis (the committed baselines): holes = 0 on
+    every row, in its place after r_req, keyed like a new file's rows."""
+    rows = regress_rows()
+    new = write_csv("with_holes.csv", rows)
+    old = os.path.join(TMP, "without_holes.csv")
+    with open(new) as f, open(old, "w") as g:
+        for line in f:
+            if line.startswith("#"):
+                g.write(line)
+                continue
+            cells = line.rstrip("\n").split(",")
+            del cells[4]
+            g.write(",".join(cells) + "\n")
+    _, header, _ = results.read_raw(old)
+    assert "holes" not in header and header[:4] == ["variant", "family", "n", "r_req"], header
+    _, a = results.load_csv(new)
+    _, b = results.load_csv(old)
+    assert a == b, (a[0], b[0])
+    assert list(b[0])[:9] == list(results.CONFIG_COLS) and b[0]["holes"] == 0
+    raw = dict(zip(header, results.read_raw(old)[2][0]))
+    assert results.config_key(raw) == results.config_key(a[0]), results.config_key(raw)
+    # regress.py compares the new file with the old one as equal
+    rc, out = run("regress.py", new, old)
+    assert rc == 0 and "3 configurations compared, 0 regressions" in out, out
 
 def test_k_order_value_group_slope():
     ks = ["max", "16", "", "2", "1", 4]
