@@ -177,7 +177,12 @@ def families():
         p = subprocess.run([WSKEL_GEN, "--list"], capture_output=True, text=True, timeout=60)
         if p.returncode != 0:
             raise RuntimeError("%s --list: exit %d: %s" % (WSKEL_GEN, p.returncode, p.stderr))
-        _FAMILIES = [line.split()[0] for line in p.stdout.splitlines() if line.strip()]
+        # Not "holes": without --holes it is a star/convex polygon the other
+        # families already cover, and a new class would shift every case's
+        # class (case i is class i mod the number of classes), invalidating
+        # tests/data/stress/KNOWN.  Holes are swept by test_cgal_agreement.py.
+        _FAMILIES = [line.split()[0] for line in p.stdout.splitlines()
+                     if line.strip() and line.split()[0] != "holes"]
         if not _FAMILIES:
             raise RuntimeError("%s --list lists no family" % WSKEL_GEN)
     return _FAMILIES
