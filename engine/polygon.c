@@ -842,7 +842,8 @@ wk_status wk_polygon_write_wpoly(wk_run *R, FILE *f, const wk_polygon *P) {
         fprintf(f, "# wskel polygon: %u vertices, counter-clockwise; x y weight\n", P->n);
     else
         fprintf(f, "# wskel polygon: %u vertices in %u rings (the outer one counter-clockwise, "
-                "%u holes clockwise); x y weight\n", P->n, P->n_rings, P->n_rings - 1);
+                "%u hole%s clockwise); x y weight\n", P->n, P->n_rings, P->n_rings - 1,
+                P->n_rings == 2 ? "" : "s");
     /* %.17g round-trips every double. */
     for (uint32_t k = 0; k < P->n_rings; k++) {
         fprintf(f, "%u\n", ring_size(P, k));

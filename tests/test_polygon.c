@@ -446,9 +446,20 @@ Test(polygon, reject_degenerate_shapes) {
     const double lx[3] = {0, 2, 1}, ly[3] = {0, 0, 0};
     expect_reject(3, lx, ly, NULL, NULL, "zero area");
     /* Products that underflow to zero: outside the predicates' domain, and
-    ** rejected rather than mis-oriented. */
+    ** rejected rather than mis-oriented (the input domain's bound on
+    ** coordinates); a polygon of size 1e-150 is inside it and accepted. */
     const double ux[3] = {0, 1e-170, 0}, uy[3] = {0, 0, 1e-170};
-    expect_reject(3, ux, uy, NULL, NULL, "area");
+    expect_reject(3, ux, uy, NULL, NULL, "coordinate too small (1e-170, 0)");
+    const double sub[3] = {0, 4.9e-324, 0}, subf[3] = {0, 0, 1};
+    expect_reject(3, sub, subf, NULL, NULL, "coordinates must have magnitude at least 1e-150");
+    const double tx[3] = {1e-150, 3e-150, 1e-150}, ty[3] = {1e-150, 1e-150, 3e-150};
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = NULL;
+    cr_assert_eq(wk_polygon_from_arrays(&R, 3, tx, ty, NULL, "t", NULL, &P), WK_OK, "%s",
+                 R.err.msg);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
     /* 0-degree spike: edge 2 goes back along edge 1. */
     const long lines[5] = {2, 3, 4, 5, 6};
     const double sx[5] = {0, 2, 4, 3, 0}, sy[5] = {0, 0, 0, 0, 3};
