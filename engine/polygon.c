@@ -443,6 +443,18 @@ static wk_status check_values(wk_run *R, const wk_point *p, const double *w, uin
                 return WK_FAIL(R, WK_EINPUT, name, line_of(lines, i),
                                "weight of edge %u must be > 0 (got %g)", i, w[i]);
         }
+    if (w) {
+        uint32_t lo = 0, hi = 0;
+        for (uint32_t i = 1; i < n; i++) {
+            if (w[i] < w[lo]) lo = i;
+            if (w[i] > w[hi]) hi = i;
+        }
+        if (w[hi] > WK_POLYGON_MAX_WEIGHT_RATIO * w[lo])
+            return WK_FAIL(R, WK_EINPUT, name, line_of(lines, hi),
+                           "weights of edge %u (%g) and edge %u (%g) differ by a factor of %.3g, "
+                           "above the %g the wavefront resolves (input domain, see README)",
+                           hi, w[hi], lo, w[lo], w[hi] / w[lo], WK_POLYGON_MAX_WEIGHT_RATIO);
+    }
     return WK_OK;
 }
 

@@ -328,6 +328,11 @@ static inline void wk_count(wk_run *R, uint32_t counter, uint64_t n) {
 ** skeleton failed validation).  1e-150 keeps products of two coordinates
 ** above DBL_MIN. */
 #define WK_POLYGON_MIN_COORD 1e-150
+/* Largest ratio of two weights accepted: make stress sweeps ratios up to it
+** (tests/stress/makers.py, class weight_ratio: every variant passes); far
+** beyond it the vertex speeds overflow (a fuzz finding with weights 1 and
+** 5e307: "vertex ... is not finite"). */
+#define WK_POLYGON_MAX_WEIGHT_RATIO 1e6
 
 /* A polygon, possibly with holes: ring 0 is the outer boundary, rings 1..
 ** are holes.  Stored vertex ids run over the rings in order: ring k is

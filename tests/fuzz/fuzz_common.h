@@ -171,8 +171,9 @@ static inline int bytes_graphml_refusable(const uint8_t *d, size_t n) {
 }
 
 /* Independent reading of an accepted .wpoly (after bytes_wpoly_refusable
-** said the bytes are fine): the count, then x y [w] per line, compared with
-** P in input numbering.  strtod as the format says. */
+** said the bytes are fine): per ring a count, then x y [w] per line,
+** compared with P in input numbering (ring k's count is its size in P).
+** strtod as the format says. */
 static inline void check_wpoly_values(const uint8_t *d, size_t n, const wk_polygon *P) {
     char *buf = malloc(n + 1);
     if (!buf) abort();
@@ -180,7 +181,8 @@ static inline void check_wpoly_values(const uint8_t *d, size_t n, const wk_polyg
     buf[n] = '\0';
     char *s = buf;
     if (n >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0) s += 3;
-    long count = -1, got = 0;
+    long count = -1, got = 0, in_ring = 0;
+    uint32_t ring = 0;
     /* Stored vertex of each input vertex, stored edge of each input edge. */
     uint32_t *vj = calloc(P->n, sizeof *vj), *ej = calloc(P->n, sizeof *ej);
     if (!vj || !ej) abort();
@@ -202,13 +204,19 @@ static inline void check_wpoly_values(const uint8_t *d, size_t n, const wk_polyg
                 if (k == 4) finding("accepted a line with more than 3 fields");
                 tok[k++] = c;
             }
-            if (count < 0) {
+            if (count < 0 || in_ring == count) {
                 if (k != 1) finding("accepted a count line of %d fields", k);
+                if (ring >= P->n_rings) finding("accepted more rings than the polygon's %u",
+                                                P->n_rings);
                 count = strtol(tok[0], NULL, 10);
-                if ((uint32_t)count != P->n) finding("count %ld, polygon has %u", count, P->n);
+                uint32_t size = P->ring_start[ring + 1] - P->ring_start[ring];
+                if ((uint32_t)count != size)
+                    finding("count %ld for ring %u, polygon's ring has %u", count, ring, size);
+                ring++;
+                in_ring = 0;
             } else {
                 if (k < 2 || k > 3) finding("accepted a vertex line of %d fields", k);
-                if (got >= count) finding("accepted more vertex lines than the count");
+                in_ring++;
                 double v[3] = {0, 0, 1};
                 for (int i = 0; i < k; i++) {
                     char *end;
@@ -226,6 +234,7 @@ static inline void check_wpoly_values(const uint8_t *d, size_t n, const wk_polyg
         line = next;
     }
     if (got != (long)P->n) finding("%ld vertex lines, polygon has %u", got, P->n);
+    if (ring != P->n_rings) finding("%u rings in the file, polygon has %u", ring, P->n_rings);
     free(vj);
     free(ej);
     free(buf);
