@@ -130,19 +130,25 @@ static inline double max_weight(const wk_polygon *P) {
 }
 
 /* The polygon of generator family `family` with n vertices, r reflex ones
-** (-1: the family's default), seed and weight mode `weights` (NULL: unit;
-** see wk_gen_parse_weights).  Returns wk_generate's status: WK_EINPUT when
-** the family cannot make this n or r. */
-static inline wk_status gen(wk_run *R, const char *family, uint32_t n, int64_t r, uint64_t seed,
-                            const char *weights, wk_polygon **P) {
+** (-1: the family's default), `holes` holes (gen: none), seed and weight
+** mode `weights` (NULL: unit; see wk_gen_parse_weights).  Returns
+** wk_generate's status: WK_EINPUT when the family cannot make this n or r. */
+static inline wk_status gen_holes(wk_run *R, const char *family, uint32_t n, int64_t r,
+                                  uint32_t holes, uint64_t seed, const char *weights,
+                                  wk_polygon **P) {
     wk_gen_params g;
     wk_gen_params_init(&g);
     g.family = family;
     g.n = n;
     g.r = r;
+    g.holes = holes;
     g.seed = seed;
     if (weights && wk_gen_parse_weights(R, weights, &g) != WK_OK) return R->err.code;
     return wk_generate(R, &g, P);
+}
+static inline wk_status gen(wk_run *R, const char *family, uint32_t n, int64_t r, uint64_t seed,
+                            const char *weights, wk_polygon **P) {
+    return gen_holes(R, family, n, r, 0, seed, weights, P);
 }
 /* The same with the family's r, asserted to succeed. */
 static inline wk_polygon *gen_polygon(wk_run *R, const char *family, uint32_t n, uint64_t seed,

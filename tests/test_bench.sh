@@ -151,8 +151,9 @@ open(sys.argv[2], "w").writelines(out)
 EOF
 check "regress fails on peak tracked bytes +5%" \
     '! $PY scripts/regress.py $T/run.csv $T/doc2.csv --time-tol 3 > $T/r3.txt && grep -q "peak tracked" $T/r3.txt'
-# doctored time: the baseline claims everything but the reference was 3x faster
-$PY - "$T/base.csv" "$T/doc3.csv" <<'EOF'
+# scale_wall IN OUT FACTOR: IN with the wall times of naive comb n=3000 multiplied
+scale_wall() {
+    $PY - "$1" "$2" "$3" <<'EOF'
 import sys
 lines = open(sys.argv[1]).read().splitlines(True)
 hdr = [l for l in lines if not l.startswith("#")][0].rstrip("\n").split(",")
@@ -161,31 +162,21 @@ out = []
 for l in lines:
     if not l.startswith("#") and l.startswith("naive,comb,3000,"):
         f = l.split(",")
-        f[i] = repr(float(f[i]) / 3)
+        f[i] = repr(float(f[i]) * float(sys.argv[3]))
         l = ",".join(f)
     out.append(l)
 open(sys.argv[2], "w").writelines(out)
 EOF
+}
+# doctored time: the baseline claims everything but the reference was 3x faster
+scale_wall "$T/base.csv" "$T/doc3.csv" 0.3333333333333333
 check "regress fails on a 3x slower configuration" \
     '! $PY scripts/regress.py $T/run.csv $T/doc3.csv --min-time 0.005 > $T/r4.txt && grep -q "REGRESSION: time x" $T/r4.txt'
 check "a 3x slower configuration still fails after re-measuring (--confirm)" \
     '! $PY scripts/regress.py $T/run.csv $T/doc3.csv --min-time 0.005 --confirm $BENCH --confirm-rounds 1 > $T/r5.txt && grep -q "re-measured" $T/r5.txt'
 # doctored run: one configuration 3x slower in the sweep only (a burst of
 # load); re-measuring must clear it, and without --confirm it must not
-$PY - "$T/run.csv" "$T/slow_run.csv" <<'EOF'
-import sys
-lines = open(sys.argv[1]).read().splitlines(True)
-hdr = [l for l in lines if not l.startswith("#")][0].rstrip("\n").split(",")
-i = hdr.index("wall_s")
-out = []
-for l in lines:
-    if not l.startswith("#") and l.startswith("naive,comb,3000,"):
-        f = l.split(",")
-        f[i] = repr(float(f[i]) * 3)
-        l = ",".join(f)
-    out.append(l)
-open(sys.argv[2], "w").writelines(out)
-EOF
+scale_wall "$T/run.csv" "$T/slow_run.csv" 3
 check "a burst of load in the sweep fails without --confirm" \
     '! $PY scripts/regress.py $T/slow_run.csv $T/base.csv --min-time 0.005 > $T/r6.txt && grep -q "REGRESSION: time x" $T/r6.txt'
 check "... and passes once re-measured (--confirm)" \

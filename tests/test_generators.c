@@ -456,14 +456,7 @@ Test(generators, large_n_smoke) {
 
 static wk_status gen_h(wk_run *R, const char *family, uint32_t n, uint32_t holes, uint64_t seed,
                        const char *weights, wk_polygon **P) {
-    wk_gen_params g;
-    wk_gen_params_init(&g);
-    g.family = family;
-    g.n = n;
-    g.holes = holes;
-    g.seed = seed;
-    if (weights && wk_gen_parse_weights(R, weights, &g) != WK_OK) return R->err.code;
-    return wk_generate(R, &g, P);
+    return gen_holes(R, family, n, -1, holes, seed, weights, P);
 }
 
 /* Independent oracle for a polygon with holes, O(n^2): edges of one ring
