@@ -630,6 +630,30 @@ static wk_status check_needles(wk_run *R, const wk_polygon *P, const long *lines
     return WK_OK;
 }
 
+/* The input domain's bound on holes: each hole's bounding-box diagonal at
+** least WK_POLYGON_MIN_HOLE_REL of the polygon's (wskel.h says why). */
+static wk_status check_hole_sizes(wk_run *R, const wk_polygon *P, const long *lines) {
+    if (P->n_rings == 1) return WK_OK;
+    double scale = wk_polygon_scale(P);
+    for (uint32_t k = 1; k < P->n_rings; k++) {
+        uint32_t s = P->ring_start[k];
+        double x0 = P->p[s].x, x1 = x0, y0 = P->p[s].y, y1 = y0;
+        for (uint32_t i = s + 1; i < ring_end(P, k); i++) {
+            x0 = fmin(x0, P->p[i].x);
+            x1 = fmax(x1, P->p[i].x);
+            y0 = fmin(y0, P->p[i].y);
+            y1 = fmax(y1, P->p[i].y);
+        }
+        double d = hypot(x1 - x0, y1 - y0);
+        if (!(d >= WK_POLYGON_MIN_HOLE_REL * scale))
+            return WK_FAIL(R, WK_EINPUT, P->name, line_of(lines, s),
+                           "hole %u is %.3g across, below %g of the polygon's %.3g (input "
+                           "domain, see README: a hole below the tolerance cannot be resolved)",
+                           k, d, WK_POLYGON_MIN_HOLE_REL, scale);
+    }
+    return WK_OK;
+}
+
 /* ---- construction ---- */
 
 /* Reverse ring k in place: stored local vertex j := input local m-1-j.
@@ -733,6 +757,7 @@ wk_status wk_polygon_from_rings(wk_run *R, uint32_t n_rings, const uint32_t *rin
         goto fail;
     }
     if ((st = check_needles(R, P, lines)) != WK_OK) goto fail;
+    if ((st = check_hole_sizes(R, P, lines)) != WK_OK) goto fail;
     P->r = 0;
     for (uint32_t i = 0; i < n; i++) P->r += wk_polygon_is_reflex_counted(R, P, i);
     WK_FREE_ARRAY(R, ccw, n_rings);
@@ -781,7 +806,8 @@ wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P) {
                          k);
             goto done;
         }
-    if ((st = check_needles(R, P, NULL)) != WK_OK) goto done;
+    if ((st = check_needles(R, P, NULL)) != WK_OK || (st = check_hole_sizes(R, P, NULL)) != WK_OK)
+        goto done;
     uint32_t r = 0;
     for (uint32_t i = 0; i < n; i++) r += wk_polygon_is_reflex_counted(R, P, i);
     if (r != P->r) st = WK_FAIL(R, WK_EINPUT, name, 0, "reflex count is %u, stored %u", r, P->r);

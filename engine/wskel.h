@@ -333,6 +333,13 @@ static inline void wk_count(wk_run *R, uint32_t counter, uint64_t n) {
 ** beyond it the vertex speeds overflow (a fuzz finding with weights 1 and
 ** 5e307: "vertex ... is not finite"). */
 #define WK_POLYGON_MAX_WEIGHT_RATIO 1e6
+/* Smallest hole accepted, as a fraction of the polygon's bounding-box
+** diagonal (its own diagonal): a hole below the simulation's tolerances
+** cannot leave the cycle of arcs around it that the skeleton of a polygon
+** with holes has (a fuzz finding: holes of size 10 next to a vertex 5e12
+** away, every variant's skeleton a tree).  1e-6 is the validator's default
+** tolerance, 1000 times eps_d (tolerance.h). */
+#define WK_POLYGON_MIN_HOLE_REL 1e-6
 
 /* A polygon, possibly with holes: ring 0 is the outer boundary, rings 1..
 ** are holes.  Stored vertex ids run over the rings in order: ring k is
