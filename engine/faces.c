@@ -5,12 +5,14 @@
 ** Walking one face.  The k arcs labelled e give k half-arcs (from, to), each
 ** oriented with the face on its left.  Sorted by `from`, two half-arcs
 ** leaving the same node mean the face branches there.  The walk starts at
-** node e+1 and follows the unique half-arc leaving the current node (binary
-** search) until it reaches node e.  Each half-arc may be used once: using one
-** twice means the walk circles without reaching e.  When the walk ends, all k
-** half-arcs must have been used, else some arc labelled e is off the face's
-** boundary.  A successful walk thus yields exactly k + 1 cycle nodes, which
-** is what the bulk builder reserves per face.
+** node next(e) and follows the unique half-arc leaving the current node
+** (binary search) until it reaches node e.  Each half-arc may be used once:
+** using one twice means the walk circles without reaching e.  When the walk
+** ends, every unused half-arc must lie on a closed loop of unused ones (an
+** island, possible only with holes: walk_loops, bridge_loop), else some arc
+** labelled e is off the face's boundary.  A face without islands thus
+** yields exactly k + 1 cycle nodes, each island 2 more (its bridge); the bulk
+** builder starts from the sum of k + 1 and grows for islands.
 **
 ** All ids in messages are stored ids (see wk_polygon_input_edge for the
 ** input numbering, which differs when the input was clockwise).
@@ -383,14 +385,13 @@ wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, w
         st = walk_face(R, P, S, e, h + hs[e], k, cyc, flag, scratch, &got, &loops, what);
         if (st != WK_OK) break;
         if ((st = WK_GROW(R, F->node, F->cap_node, pos + got)) != WK_OK) break;
-        if (loops && !F->bridge &&
-            (st = WK_GROW(R, F->bridge, F->cap_bridge, F->cap_node)) == WK_OK)
-            memset(F->bridge, 0, F->cap_bridge);
-        if (st != WK_OK) break;
-        if (F->bridge && F->cap_bridge < F->cap_node) {
-            uint32_t old = F->cap_bridge;
+        /* bridge[] exists from the first face with an island on and keeps
+        ** node[]'s size; the faces before that one have no bridge (zeroed
+        ** once), each face's own flags are copied below */
+        if (loops || F->bridge) {
+            bool first = !F->bridge;
             if ((st = WK_GROW(R, F->bridge, F->cap_bridge, F->cap_node)) != WK_OK) break;
-            memset(F->bridge + old, 0, F->cap_bridge - old);
+            if (first) memset(F->bridge, 0, pos);
         }
         start[e] = pos;
         memcpy(F->node + pos, cyc, (size_t)got * sizeof *cyc);

@@ -3,8 +3,8 @@
 ** writers share (engine-private; not part of the public API in wskel.h).
 **
 ** A face is the region swept by one input edge's wavefront.  Its boundary,
-** as a node cycle, is the edge itself (node e -> node e+1) followed by the
-** path of arcs labelled e from node e+1 back to node e, each arc oriented so
+** as a node cycle, is the edge itself (node e -> node next(e)) followed by the
+** path of arcs labelled e from node next(e) back to node e, each arc oriented so
 ** that the face lies on its left: an arc with left == e is walked a -> b,
 ** one with right == e is walked b -> a.  Every arc lies on exactly two face
 ** cycles, once in each direction, so the cycles sum (as chains) to the

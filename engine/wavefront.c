@@ -131,10 +131,9 @@ static void edge_event(wk_wavefront *W, uint32_t a, double *t, wk_point *p) {
     ** and move far together meanwhile (a weighted comb with edges collinear
     ** to 2e-6: collapsing a 1.1e-6 piece at once put a node 48 units off;
     ** computed earlier, when the piece was 2e-6 long, the time was exact). */
-    if (d <= W->eps_d && rate <= 0 && (d <= 0 || -rate * W->eps_t >= d)) {
+    /* (rate == 0: a sub-tolerance piece that never shrinks is gone now) */
+    if (d <= W->eps_d && rate <= 0 && (d <= 0 || -rate * W->eps_t >= d || rate == 0)) {
         *t = t0;
-    } else if (d <= W->eps_d && rate == 0) {
-        *t = t0; /* a sub-tolerance piece that never shrinks: gone now */
     } else if (rate < 0) {
         *t = t0 + (d > 0 ? d : 0) / -rate;
     } else {

@@ -560,7 +560,8 @@ wk_status wk_output_open(wk_run *R, wk_output *o, const char *path);
 wk_status wk_output_close(wk_run *R, wk_output *o, wk_status st);
 
 /* Faces: the boundary of edge e's face as a node cycle starting with the
-** edge's two vertices (e, e+1, ..., back).  Used by the validator and the
+** edge's two vertices (e, next(e), ..., back), islands bridged in (see
+** engine/faces.h).  Used by the validator and the
 ** roof writers.  *cycle is allocated through R (free with WK_FREE_ARRAY
 ** using *len). */
 wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,

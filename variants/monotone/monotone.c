@@ -60,7 +60,7 @@ static wk_status monotone_merge_run(mono *M, wk_skeleton **out) {
     ** by their own local decisions; both pass the validator, but only one
     ** can be the reference's skeleton, so such polygons go to the reference
     ** (27 of 28 stress differences had such an edge). */
-    double tiny = M->eps_d * WK_MONO_TINY_EDGE_REL / WK_TOL_REL;
+    double tiny = R->opt.tol_scale * WK_MONO_TINY_EDGE_REL * wk_polygon_scale(P);
     for (uint32_t i = 0; i < P->n; i++) {
         wk_point a = P->p[i], b = P->p[wk_polygon_next(P, i)];
         if (hypot(b.x - a.x, b.y - a.y) < tiny)
