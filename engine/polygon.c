@@ -654,6 +654,27 @@ static wk_status check_hole_sizes(wk_run *R, const wk_polygon *P, const long *li
     return WK_OK;
 }
 
+/* The input domain's bound on the distance from the origin: the largest
+** |coordinate| at most WK_POLYGON_MAX_OFFSET_REL diagonals (wskel.h says
+** why).  Names the farthest vertex. */
+static wk_status check_offset(wk_run *R, const wk_polygon *P, const long *lines) {
+    double scale = wk_polygon_scale(P), far = 0;
+    uint32_t at = 0;
+    for (uint32_t i = 0; i < P->n; i++) {
+        double m = fmax(fabs(P->p[i].x), fabs(P->p[i].y));
+        if (m > far) far = m, at = i;
+    }
+    if (!(far <= WK_POLYGON_MAX_OFFSET_REL * scale))
+        return WK_FAIL(R, WK_EINPUT, P->name, line_of(lines, at),
+                       "vertex %u (%.17g, %.17g) is %.3g polygon diagonals (%.3g) from the "
+                       "origin, above the %.3g whose output coordinates keep the tolerance's "
+                       "precision (input domain, see README): translate the polygon nearer "
+                       "the origin",
+                       P->input_index ? P->input_index[at] : at, P->p[at].x, P->p[at].y,
+                       far / scale, scale, WK_POLYGON_MAX_OFFSET_REL);
+    return WK_OK;
+}
+
 /* ---- construction ---- */
 
 /* Reverse ring k in place: stored local vertex j := input local m-1-j.
@@ -758,6 +779,7 @@ wk_status wk_polygon_from_rings(wk_run *R, uint32_t n_rings, const uint32_t *rin
     }
     if ((st = check_needles(R, P, lines)) != WK_OK) goto fail;
     if ((st = check_hole_sizes(R, P, lines)) != WK_OK) goto fail;
+    if ((st = check_offset(R, P, lines)) != WK_OK) goto fail;
     P->r = 0;
     for (uint32_t i = 0; i < n; i++) P->r += wk_polygon_is_reflex_counted(R, P, i);
     WK_FREE_ARRAY(R, ccw, n_rings);
@@ -806,7 +828,8 @@ wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P) {
                          k);
             goto done;
         }
-    if ((st = check_needles(R, P, NULL)) != WK_OK || (st = check_hole_sizes(R, P, NULL)) != WK_OK)
+    if ((st = check_needles(R, P, NULL)) != WK_OK || (st = check_hole_sizes(R, P, NULL)) != WK_OK ||
+        (st = check_offset(R, P, NULL)) != WK_OK)
         goto done;
     uint32_t r = 0;
     for (uint32_t i = 0; i < n; i++) r += wk_polygon_is_reflex_counted(R, P, i);

@@ -340,6 +340,18 @@ static inline void wk_count(wk_run *R, uint32_t counter, uint64_t n) {
 ** away, every variant's skeleton a tree).  1e-6 is the validator's default
 ** tolerance, 1000 times eps_d (tolerance.h). */
 #define WK_POLYGON_MIN_HOLE_REL 1e-6
+/* Largest distance of the polygon from the coordinate origin, in polygon
+** diagonals (the largest |coordinate| over the bounding-box diagonal).  The
+** simulation works relative to the polygon's centre, but the skeleton's
+** nodes are written (and validated) in the input's coordinates, which carry
+** a rounding of 2^-53 |coordinate|.  At 9e8 diagonals that rounding is
+** 1e-7 diagonals, a tenth of the validator's default tolerance
+** (WK_VALIDATE_TOL_REL); beyond it thin faces of a correct skeleton collapse
+** onto each other in the written coordinates (a stress finding: a comb
+** 1.4e-3 across at 2.2e6 from the origin, faces 1.3e-10 wide written with an
+** ulp of 4.7e-10, failed the planarity check in every variant; the same
+** comb at the origin passes).  Translate such input nearer the origin. */
+#define WK_POLYGON_MAX_OFFSET_REL 9.0e8
 
 /* A polygon, possibly with holes: ring 0 is the outer boundary, rings 1..
 ** are holes.  Stored vertex ids run over the rings in order: ring k is

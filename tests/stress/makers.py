@@ -404,7 +404,7 @@ def m_turned(rng):
 
 def m_far(rng):
     c = base(rng, 120)
-    size = rng.choice([1e-3, 1e-2, 1.0, 1e3])
+    size = rng.choice([5e-3, 1e-2, 1.0, 1e3])  # 5e-3 at 2.2e6: at most 4.5e8 diagonals (input domain)
     off = far_offset(rng)
     pts = fit(c.pts, size, off)
     if rng.random() < 0.3:
