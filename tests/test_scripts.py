@@ -107,6 +107,23 @@ def test_loader_comments_and_types():
     assert list(n)[:9] == list(results.CONFIG_COLS), list(n)
 
 
+def test_qsort_reference_from_comments():
+    path = write_csv("qsort.csv", [make_row("naive", "star", 100)],
+                     comments=("date: 2026-01-01",
+                               "qsort_ref_s: 0.08 (before the runs; qsort() of 1000000 doubles)",
+                               "qsort_ref_s: 0.1 (after the runs; ...)"))
+    comments, rows = results.load_csv(path)
+    assert len(rows) == 1
+    assert abs(results.qsort_ref(comments) - 0.09) < 1e-12, results.qsort_ref(comments)
+    assert results.qsort_ref(comments + ["qsort_ref_s: 0.5 (resumed)"]) == 0.1
+    assert results.qsort_ref(["date: 2026-01-01"]) is None
+    try:
+        results.qsort_ref(["qsort_ref_s: soon"])
+        raise AssertionError("a malformed line was accepted")
+    except ValueError:
+        pass
+
+
 def test_loader_empty_counters_are_none():
     path = write_csv("empty.csv", [make_row("naive", "star", 100), make_row("arrangement",
                                                                              "star", 100, "1")])
