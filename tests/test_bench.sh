@@ -17,7 +17,10 @@
 #   6. the qsort() reference (--qsort-ref): alone it prints one positive
 #      number of seconds; in a sweep (flag or spec key) the CSV gets a
 #      '# qsort_ref_s:' line before and after the runs, rows and columns as
-#      without it, --resume adds one more, scripts/results.py reads them.
+#      without it, --resume adds one more, scripts/results.py reads them;
+#   7. scripts/perf_large.sh on small n: one CSV for all variants with their
+#      qsort lines, --max-n honoured, summary.csv and REPORT.md written;
+#      an unknown variant or a bad option is a usage error (64).
 set -u
 PY=/usr/bin/python3
 BENCH=bin/wskel-bench
@@ -258,6 +261,23 @@ $BENCH --spec "$T/qs.spec" --n 100,150 --quiet --resume --out "$T/qs2.csv"
 check "qsort-ref: --resume appends its own lines and the new row" \
     '[ $(grep -c "^# qsort_ref_s: " $T/qs2.csv) = 4 ] && [ $(grep -vc "^#" $T/qs2.csv) = 3 ]'
 check "qsort-ref: off by default" '! grep -q qsort_ref $T/noqs.csv'
+
+# ---- 7. scripts/perf_large.sh
+bash scripts/perf_large.sh --n 100,200,400 --max-n arrangement=200 --out "$T/large" \
+    naive arrangement > "$T/large.out" 2>&1
+lrc=$?
+check "perf_large: runs, one CSV with every variant and its qsort lines" \
+    '[ $lrc = 0 ] && [ $(grep -vc "^#" $T/large/large.csv) = 11 ] && [ $(grep -c "^# qsort_ref_s: " $T/large/large.csv) = 4 ]'
+check "perf_large: --max-n leaves arrangement at n <= 200" \
+    '! grep -q "^arrangement,[a-z]*,400," $T/large/large.csv && grep -q "^naive,coastline,400," $T/large/large.csv'
+check "perf_large: summary.csv (4 groups) and REPORT.md" \
+    '[ $(wc -l < $T/large/summary.csv) = 5 ] && grep -q "^naive,coastline,400," $T/large/summary.csv &&
+     grep -q "| arrangement | star | 200 |" $T/large/REPORT.md && grep -q "qsort reference" $T/large/REPORT.md'
+bash scripts/perf_large.sh --out "$T/large2" nope 2> "$T/large2.err"; lrc=$?
+check "perf_large: unknown variant is a usage error (64)" \
+    '[ $lrc = 64 ] && grep -q "unknown variant .nope." $T/large2.err && [ ! -e $T/large2/large.csv ]'
+bash scripts/perf_large.sh --max-n naive naive 2>/dev/null; lrc=$?
+check "perf_large: a bad --max-n is a usage error (64)" '[ $lrc = 64 ]'
 
 # ---- usage errors
 check "unknown variant is a usage error (64)" \
