@@ -82,11 +82,13 @@ def summarise(rows, q, targets):
         t6 = at[1] if at and at[0] == "ok" else None
         ratio = t6 / q if t6 is not None and q else None
         bpv = at[2] / N_TARGET if at and at[0] == "ok" and at[2] is not None else None
-        big = pn[max(pn)] if pn else None
+        ok_ns = [n for n, t in pn.items() if t[0] == "ok"]
+        top = max(ok_ns) if ok_ns else None
+        big = pn[top] if top else None
         s = {
-            "max_n": max(pn) if pn else None,
+            "max_n": top,
             "time_over_qsort_max_n": big[1] / q if big and big[1] is not None and q else None,
-            "bytes_per_vertex_max_n": big[2] / max(pn) if big and big[2] is not None else None,
+            "bytes_per_vertex_max_n": big[2] / top if big and big[2] is not None else None,
             "time_over_qsort_1e6": ratio,
             "bytes_per_vertex_1e6": bpv,
             "exponent": expo,
@@ -106,7 +108,7 @@ def fmt(v, spec="%.3g"):
 
 
 def write_summary_csv(path, groups, ns, q):
-    cols = ["variant", "family", "max_n", "qsort_ref_s"]
+    cols = ["variant", "family", "max_n_ok", "qsort_ref_s"]
     for n in ns:
         cols += ["status_n%d" % n, "time_s_n%d" % n, "time_over_qsort_n%d" % n,
                  "bytes_per_vertex_n%d" % n]
@@ -162,7 +164,7 @@ def write_report(path, groups, comments, q, qvals, targets, command, caps, csv_n
     L.append("")
     L.append("## Summary")
     L.append("")
-    L.append("| variant | family | largest n | time / qsort, bytes / vertex at it | "
+    L.append("| variant | family | largest n with status ok | time / qsort, bytes / vertex there | "
              "time / qsort at 10^6 | bytes / vertex at 10^6 | exponent (n range, points) | "
              "time target | memory target | exponent target |")
     L.append("|---|---|---|---|---|---|---|---|---|---|")
@@ -170,7 +172,7 @@ def write_report(path, groups, comments, q, qvals, targets, command, caps, csv_n
         ex = "%s (%s, %d)" % (fmt(s["exponent"], "%.3f"), s["exponent_range"],
                               s["exponent_points"]) if s["exponent"] is not None else "n/a"
         L.append("| %s | %s | %s | %s, %s | %s | %s | %s | %s | %s | %s |" % (
-            v, fam, s["max_n"], fmt(s["time_over_qsort_max_n"], "%.3g") or "n/a",
+            v, fam, s["max_n"] or "none", fmt(s["time_over_qsort_max_n"], "%.3g") or "n/a",
             fmt(s["bytes_per_vertex_max_n"], "%.0f") or "n/a",
             fmt(s["time_over_qsort_1e6"], "%.3g") or "n/a",
             fmt(s["bytes_per_vertex_1e6"], "%.0f") or "n/a", ex, s["meets_time"],
@@ -221,7 +223,7 @@ def main():
     write_report(os.path.join(a.outdir, "REPORT.md"), groups, comments, q, qvals, targets,
                  a.command, a.caps, os.path.basename(a.csv))
     for v, fam, _, s in groups:
-        print("%-14s %-10s max n %-8s time/qsort@1e6 %-8s bytes/vertex@1e6 %-6s exponent %s" % (
+        print("%-14s %-10s max ok n %-8s time/qsort@1e6 %-8s bytes/vertex@1e6 %-6s exponent %s" % (
             v, fam, s["max_n"], fmt(s["time_over_qsort_1e6"]) or "n/a",
             fmt(s["bytes_per_vertex_1e6"], "%.0f") or "n/a",
             fmt(s["exponent"], "%.3f") or "n/a"))
