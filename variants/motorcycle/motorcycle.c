@@ -85,6 +85,7 @@ typedef struct mc_seg {
     uint8_t ev_kind;
     uint8_t ev_end;      /* switch: 0 F leaves over pa, 1 over pb */
     bool hold;           /* F has met v: no switch until the next group */
+    uint32_t probe;      /* held without F: v's split is searched next to this piece */
     uint32_t mark;
 } mc_seg;
 
@@ -366,8 +367,38 @@ static wk_status note_unknown(mc_state *A, uint32_t si) {
     return WK_OK;
 }
 
+/* No switch events for trace si's F until the next group (F has met v). */
+static wk_status hold(mc_state *A, uint32_t si) {
+    if (A->s[si].hold) return WK_OK;
+    if (WK_GROW(A->R, A->held, A->cap_held, A->n_held + 1) != WK_OK) return A->R->err.code;
+    A->s[si].hold = true;
+    A->held[A->n_held++] = si;
+    return WK_OK;
+}
+
 /* Place F of trace si by a ray shot from its vertex at time t. */
-static wk_status place_f(mc_state *A, wk_wavefront *W, uint32_t si, double t) {
+static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t);
+
+/* Trace si's end is still guarded at time t: a live trace through it has
+** the end in its unswept part (so the end will be cut when it is swept). */
+static bool guarded(const mc_state *A, const wk_wavefront *W, uint32_t si, double t) {
+    const mc_seg *S = &A->s[si];
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W);
+    wk_point X = {S->o.x + S->len * S->u.x, S->o.y + S->len * S->u.y};
+    for (uint32_t k = 0; k < S->nx; k++) {
+        const mc_cross *c = &S->x[k];
+        if (fabs(c->lam - S->len) > slack || c->other >= A->n_s) continue;
+        const mc_seg *T = &A->s[c->other];
+        if (T->v != WK_NONE && unswept(W, T, lambda_of(T, X), t)) return true;
+    }
+    return false;
+}
+
+/* Place F of trace si by a ray shot from its vertex at time t.  A hit
+** beyond the trace's end leaves F beyond when that end is still guarded
+** (allow_beyond): the wavefront will reach the trace there, and following
+** F along the ray past the end would only track pieces that cannot matter. */
+static wk_status place_f(mc_state *A, wk_wavefront *W, uint32_t si, double t, bool allow_beyond) {
     mc_seg *S = &A->s[si];
     unlink_f(A, si);
     S->beyond = false;
@@ -375,6 +406,11 @@ static wk_status place_f(mc_state *A, wk_wavefront *W, uint32_t si, double t) {
     uint32_t a = shoot(A, W, S, S->v, t, lv);
     if (a == WK_NONE) return note_unknown(A, si);
     link_f(A, W, si, a);
+    if (allow_beyond && lambda_f(W, S, t) > S->len + WK_RELOCATE_SLACK * wk_wf_eps_d(W) &&
+        guarded(A, W, si, t)) {
+        unlink_f(A, si);
+        A->s[si].beyond = true;
+    }
     return WK_OK;
 }
 
@@ -388,7 +424,7 @@ static wk_status new_segment(mc_state *A, uint32_t v, wk_point o, wk_point u, do
     S->o = o;
     S->u = u;
     S->len = len;
-    S->pa = S->pb = S->next_on = S->prev_on = WK_NONE;
+    S->pa = S->pb = S->next_on = S->prev_on = S->probe = WK_NONE;
     S->xf = S->xv = NO_CROSS;
     A->seg_of[v] = si;
     *out = si;
@@ -436,7 +472,7 @@ static wk_status late_segment(mc_state *A, wk_wavefront *W, uint32_t v, double t
     if (new_segment(A, v, wk_wf_position(W, v, t), (wk_point){vel.x / sp, vel.y / sp}, 0, &si) !=
         WK_OK)
         return R->err.code;
-    if (place_f(A, W, si, t) != WK_OK) return R->err.code;
+    if (place_f(A, W, si, t, false) != WK_OK) return R->err.code;
     mc_seg *S = &A->s[si];
     double lf = S->pa == WK_NONE ? NAN : lambda_f(W, S, t);
     S->len = isfinite(lf) && lf > 0 ? lf : 0;
@@ -451,7 +487,7 @@ static wk_status extend_segment(mc_state *A, wk_wavefront *W, uint32_t si, doubl
     if (S->v == WK_NONE || !S->beyond) return WK_OK;
     wk_count(A->R, WK_VC_trace_extensions, 1);
     double old = S->len;
-    if (place_f(A, W, si, t) != WK_OK) return A->R->err.code;
+    if (place_f(A, W, si, t, false) != WK_OK) return A->R->err.code;
     S = &A->s[si];
     double lf = S->pa == WK_NONE ? NAN : lambda_f(W, S, t);
     if (isfinite(lf) && lf > S->len) S->len = lf;
@@ -545,6 +581,15 @@ static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
     }
     const mc_seg *S = &A->s[A->seg_of[v]];
     if (S->beyond) return; /* the wavefront has not reached v's trace yet */
+    if (S->probe != WK_NONE && wk_wf_alive(W, S->probe)) {
+        wk_wf_split_search q;
+        wk_wf_split_begin(W, v, &q);
+        uint32_t a = wk_wf_prev(W, wk_wf_prev(W, S->probe));
+        for (int k = 0; k < 5; k++, a = wk_wf_next(W, a))
+            if (a != v && wk_wf_next(W, a) != v) wk_wf_split_test(W, &q, a);
+        wk_wf_split_offer(W, &q);
+        return;
+    }
     if (S->pa == WK_NONE || !wk_wf_alive(W, S->pa) || wk_wf_next(W, S->pa) != S->pb) {
         brute_split(W, v);
         return;
@@ -596,7 +641,7 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
                    wk_wf_edge_out(W, m->wall_edge) == m->wall_edge) {
             link_f(A, W, si, m->wall_edge);
         } else {
-            st = place_f(A, W, si, 0.0);
+            st = place_f(A, W, si, 0.0, true);
         }
     }
     /* the resting Steiner vertices: the traces ending on each trace, and
@@ -619,11 +664,11 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     for (uint32_t i = 0; st == WK_OK && i < G->n; i++) {
         uint32_t si = seg_id[i];
         if (si == WK_NONE || !A->s[si].beyond) continue;
-        bool guarded = false;
+        bool has_guard = false;
         const mc_seg *S = &A->s[si];
-        for (uint32_t k = 0; k < S->nx && !guarded; k++)
-            guarded = fabs(S->x[k].lam - S->len) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W);
-        if (!guarded) st = place_f(A, W, si, 0.0);
+        for (uint32_t k = 0; k < S->nx && !has_guard; k++)
+            has_guard = fabs(S->x[k].lam - S->len) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W);
+        if (!has_guard) st = place_f(A, W, si, 0.0, true);
     }
     if (seg_id) WK_FREE_ARRAY(R, seg_id, G->n);
     wk_motorcycle_graph_free(R, G);
@@ -692,6 +737,7 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < A->n_held; i++) {
         uint32_t si = A->held[i];
         A->s[si].hold = false;
+        A->s[si].probe = WK_NONE;
         if (A->s[si].v != WK_NONE && queue_todo(A, si) != WK_OK) return R->err.code;
     }
     A->n_held = 0;
@@ -731,7 +777,7 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
                 return R->err.code;
             continue;
         }
-        if (place_f(A, W, si, t) != WK_OK || arm_segment(A, W, si) != WK_OK || wk_wf_reschedule(W, A->s[si].v) != WK_OK)
+        if (place_f(A, W, si, t, true) != WK_OK || arm_segment(A, W, si) != WK_OK || wk_wf_reschedule(W, A->s[si].v) != WK_OK)
             return R->err.code;
     }
     for (uint32_t i = 0; i < n_fresh; i++) {
@@ -761,8 +807,18 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     link_f(A, W, sj, a);
     double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
     T = &A->s[sj];
-    if (!(l1 < l0)) {
-        if (place_f(A, W, sj, t) != WK_OK) return A->R->err.code;
+    if (!(l1 < l0) && fabs(lam - lambda_v(W, T, t)) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W)) {
+        /* v' is at X itself as the piece passes (two reflex vertices
+        ** meeting; v' at its crash point): its split is with a piece next
+        ** to the cutting one, found by the reference's test over those
+        ** (mc_full) until the group that follows; no ray shot. */
+        unlink_f(A, sj);
+        T = &A->s[sj];
+        T->probe = a;
+        T->xf = NO_CROSS;
+        if (hold(A, sj) != WK_OK) return A->R->err.code;
+    } else if (!(l1 < l0)) {
+        if (place_f(A, W, sj, t, true) != WK_OK) return A->R->err.code;
         T = &A->s[sj];
         double lf = lambda_f(W, T, t);
         T->xf = isfinite(lf) ? next_down(T, lf, WK_NONE) : NO_CROSS;
@@ -815,14 +871,24 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
             ** on the piece it had; the group that follows places it. */
             unlink_f(A, si);
             link_f(A, W, si, old_pa);
-            A->s[si].hold = true;
-            if (WK_GROW(R, A->held, A->cap_held, A->n_held + 1) != WK_OK) return R->err.code;
-            A->held[A->n_held++] = si;
+            if (hold(A, si) != WK_OK) return R->err.code;
             if (schedule_seg(A, W, si) != WK_OK) return R->err.code;
             return wk_wf_reschedule(W, v);
         }
-        if (own || wk_wf_reflex(W, u) || (A->s[si].ev_kind == MC_SWITCH && A->s[si].ev_t <= t)) {
-            if (place_f(A, W, si, t) != WK_OK) return R->err.code;
+        bool bounce = A->s[si].ev_kind == MC_SWITCH && A->s[si].ev_t <= t;
+        bool jump = wk_wf_reflex(W, u);
+        if (jump && !own && !bounce) {
+            /* Over a reflex vertex u the first wavefront point along the
+            ** trace may jump elsewhere, unless u's other piece takes over at
+            ** u itself: it does when its crossing with the trace moves
+            ** towards v (u sits on the trace, at a resting Steiner vertex
+            ** or the trace's end).  Then no ray shot is needed. */
+            const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+            double l0 = lambda_on_line(&A->s[si], L, t), l1 = lambda_on_line(&A->s[si], L, t + 1);
+            jump = !(l1 < l0);
+        }
+        if (own || jump || bounce) {
+            if (place_f(A, W, si, t, true) != WK_OK) return R->err.code;
             seg_event(A, W, si);
             if (A->s[si].pa == old_pa && A->s[si].ev_kind == MC_SWITCH && A->s[si].ev_t <= t) {
                 unlink_f(A, si);
