@@ -107,7 +107,7 @@ static wk_status push_local(wk_wavefront *W, uint32_t u) {
 ** vertices are degenerate and walk whole cycles.
 ** Cycle ids: a cycle the walks cover completely gets its own id (1, 2, ..:
 ** it may vanish in this group); the open stretches of longer cycles share
-** id 0, which counts as alive (local_open). */
+** id 0, which counts as alive (it may even hold no vertex). */
 #define LOCAL_REACH 3
 static wk_status collect_local(wk_wavefront *W) {
     W->stamp++;
@@ -131,11 +131,9 @@ static wk_status collect_local(wk_wavefront *W) {
         }
     }
     /* open stretches (their first vertex's prev is outside): id 0 */
-    W->local_open = false;
     for (uint32_t i = 0; i < W->n_comp; i++) {
         uint32_t h = W->comp[i];
         if (W->v[W->v[h].prev].seen == W->stamp) continue;
-        W->local_open = true;
         for (uint32_t u = h; W->v[u].seen == W->stamp && W->v[u].cyc == WK_NONE; u = W->v[u].next)
             W->v[u].cyc = 0;
     }
@@ -251,7 +249,6 @@ static wk_status plan_nodes(wk_wavefront *W, double t) {
         uint32_t k;
         if (add_cluster(W, wk_wf_pos(&W->v[W->forced[i]], t), &k) != WK_OK) return R->err.code;
     }
-    W->local_open = false;
     W->local_walk = W->n_forced == 0;
     if (W->local_walk) return collect_local(W);
     return collect_cycles(W);
@@ -625,7 +622,6 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
     if (W->local_walk && !local_walk_suffices(W, t)) {
         /* the group reaches beyond the local walk: take whole cycles */
         W->local_walk = false;
-        W->local_open = false;
         if (collect_cycles(W) != WK_OK) return R->err.code;
         plan_arrivals(W, t);
     }
@@ -876,7 +872,7 @@ static wk_status count_group(wk_wavefront *W, double t) {
     ** none of its nodes starts a new vertex (flag 1: alive) */
     if (WK_GROW(R, W->cycflag, W->cap_cycflag, W->n_cyc + 1) != WK_OK) return R->err.code;
     memset(W->cycflag, 0, W->n_cyc);
-    if (W->local_open) W->cycflag[0] = 1; /* only part of these cycles was looked at */
+    if (W->local_walk) W->cycflag[0] = 1; /* id 0: stretches of cycles looked at in part */
     for (uint32_t i = 0; i < W->n_comp; i++) {
         const wk_wf_vertex *u = &W->v[W->comp[i]];
         if (u->at == WK_NONE || W->cl[u->at].pairs) W->cycflag[u->cyc] = 1;
