@@ -148,6 +148,11 @@
 ** above it the crossing's position along the lines (rounding ~1e-16 *
 ** scale / |cross|) stays far below the polygon's size. */
 #define WK_MCG_PARALLEL_SIN 1e-12
+/* Resting Steiner vertices on one trace within WK_MC_STEINER_SLACK * eps_d
+** of each other are one point (a trace that ended at another's end: the
+** two places come from different pairs of motorcycles and agree to a few
+** eps_d); a cut there passes all of them at once. */
+#define WK_MC_STEINER_SLACK 16.0
 /* Its candidate grid lists a trace in every cell within this many eps_d of
 ** the trace's bounding segment (origin to wall hit).  Crossings count up to
 ** eps_d beyond a segment's ends, and a computed crossing lies within

@@ -398,20 +398,50 @@ static bool guarded(const mc_state *A, const wk_wavefront *W, uint32_t si, doubl
 ** beyond the trace's end leaves F beyond when that end is still guarded
 ** (allow_beyond): the wavefront will reach the trace there, and following
 ** F along the ray past the end would only track pieces that cannot matter. */
+static wk_status queue_ext(mc_state *A, uint32_t si);
+static bool ends_on(const mc_state *A, uint32_t si, uint32_t sj, double slack);
+
+/* F of trace sj jumped from old_lf to new_lf (a ray shot, F unknown): the
+** crossings in between were swept without a start event, so the traces
+** waiting there with F beyond lose their guard (they are extended). */
+static wk_status skipped(mc_state *A, const wk_wavefront *W, uint32_t sj, double old_lf,
+                         double new_lf) {
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W);
+    const mc_seg *T = &A->s[sj];
+    for (uint32_t k = 0; k < T->nx; k++) {
+        const mc_cross *c = &T->x[k];
+        if (!(c->lam > new_lf + slack && c->lam < old_lf - slack) || c->other >= A->n_s) continue;
+        const mc_seg *S = &A->s[c->other];
+        if (S->v != WK_NONE && S->beyond && ends_on(A, c->other, sj, slack) &&
+            queue_ext(A, c->other) != WK_OK)
+            return A->R->err.code;
+        T = &A->s[sj];
+    }
+    return WK_OK;
+}
+
 static wk_status place_f(mc_state *A, wk_wavefront *W, uint32_t si, double t, bool allow_beyond) {
     mc_seg *S = &A->s[si];
+    /* where F was (unknown or beyond: anywhere up to the end) */
+    double old_lf = S->pa != WK_NONE ? lambda_f(W, S, t) : INFINITY;
+    if (!isfinite(old_lf) || old_lf > S->len) old_lf = S->len + 2 * WK_RELOCATE_SLACK * wk_wf_eps_d(W);
     unlink_f(A, si);
     S->beyond = false;
     double lv = lambda_v(W, S, t);
     uint32_t a = shoot(A, W, S, S->v, t, lv);
-    if (a == WK_NONE) return note_unknown(A, si);
+    if (a == WK_NONE) {
+        if (skipped(A, W, si, old_lf, lv) != WK_OK) return A->R->err.code;
+        return note_unknown(A, si);
+    }
     link_f(A, W, si, a);
-    if (allow_beyond && lambda_f(W, S, t) > S->len + WK_RELOCATE_SLACK * wk_wf_eps_d(W) &&
+    double lf = lambda_f(W, &A->s[si], t);
+    if (allow_beyond && lf > A->s[si].len + WK_RELOCATE_SLACK * wk_wf_eps_d(W) &&
         guarded(A, W, si, t)) {
         unlink_f(A, si);
         A->s[si].beyond = true;
+        return WK_OK;
     }
-    return WK_OK;
+    return skipped(A, W, si, old_lf, isfinite(lf) ? lf : lv);
 }
 
 static wk_status new_segment(mc_state *A, uint32_t v, wk_point o, wk_point u, double len,
@@ -670,6 +700,17 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
             has_guard = fabs(S->x[k].lam - S->len) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W);
         if (!has_guard) st = place_f(A, W, si, 0.0, true);
     }
+#ifdef MC_DEBUG
+    for (uint32_t i = 0; i < G->n; i++) {
+        const wk_motorcycle *m = &G->m[i];
+        DBG("moto %u v %u kind %d len %.9g other %d other_len %.9g group %d\n", i, m->vertex, m->kind, m->len, (int)m->other, m->other_len, (int)m->group);
+    }
+    for (uint32_t si = 0; si < A->n_s; si++) {
+        DBG("seg %u v %u len %.9g beyond %d pa %d:", si, A->s[si].v, A->s[si].len, A->s[si].beyond, (int)A->s[si].pa);
+        for (uint32_t k = 0; k < A->s[si].nx; k++) DBG(" (%.9g,%u)", A->s[si].x[k].lam, A->s[si].x[k].other);
+        DBG("\n");
+    }
+#endif
     if (seg_id) WK_FREE_ARRAY(R, seg_id, G->n);
     wk_motorcycle_graph_free(R, G);
     uint32_t n_graph = A->n_s;
@@ -794,6 +835,8 @@ static double mc_next_time(void *ud) {
     return A->Q.key[wk_event_queue_peek(&A->Q)].time;
 }
 
+static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t);
+
 /* Cut s' at lam (a crossing X): F' := X on piece a. */
 static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via) {
     mc_seg *T = &A->s[sj];
@@ -828,6 +871,22 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         for (uint32_t k = 0; k < T->nx; k++)
             if (T->x[k].other == via && fabs(T->x[k].lam - lam) < gap)
                 gap = fabs(T->x[k].lam - lam), at = T->x[k].lam;
+        /* F' is at X now: the other traces through X (another trace's
+        ** end there, a simultaneous crash) are passed at once (the entries
+        ** at X with a lower id than via would be skipped by the walk down
+        ** from (X, via); the others are met again as start events and
+        ** find X swept) */
+        double slack = WK_MC_STEINER_SLACK * wk_wf_eps_d(W);
+        for (uint32_t k = 0; k < A->s[sj].nx; k++) {
+            mc_cross c = A->s[sj].x[k];
+            if (fabs(c.lam - at) > slack) continue;
+            if (c.other == via || c.other >= A->n_s || A->s[c.other].v == WK_NONE) continue;
+            const mc_seg *O = &A->s[c.other];
+            wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
+            double lo = lambda_of(O, X);
+            if (unswept(W, O, lo, t) && cut(A, W, c.other, a, lo, sj) != WK_OK) return A->R->err.code;
+        }
+        T = &A->s[sj];
         T->xf = next_down(T, at, via);
     }
     if (schedule_seg(A, W, sj) != WK_OK) return A->R->err.code;
@@ -899,8 +958,8 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
             S->xf = S->pa != WK_NONE && isfinite(lf) ? next_down(S, lf, WK_NONE) : NO_CROSS;
         }
         S = &A->s[si];
-        if (schedule_seg(A, W, si) != WK_OK) return R->err.code;
-        return wk_wf_reschedule(W, S->v);
+        if (schedule_seg(A, W, si) != WK_OK || wk_wf_reschedule(W, S->v) != WK_OK) return R->err.code;
+        return flush_extensions(A, W, t);
     }
     uint8_t kind = S->ev_kind;
     mc_cross x = kind == MC_START ? S->xf : S->xv;

@@ -479,6 +479,21 @@ static void sim_clear(sim *S) {
 
 /* ============================================================ the rays */
 
+/* A motorcycle starts at v when the wavefront's vertex at v is reflex:
+** exactly reflex and its edges not parallel or antiparallel below the
+** wavefront's bar (wk_vertex_start: a vertex between edges parallel below
+** WK_PARALLEL_SIN moves with its edges and traces no reflex arc, a
+** stress finding: such a vertex's instant trace blocked a real motorcycle,
+** whose vertex then outlived its trace). */
+static bool launches(wk_run *R, const wk_polygon *P, uint32_t v) {
+    if (!(R ? wk_polygon_is_reflex_counted(R, P, v) : wk_polygon_is_reflex(P, v))) return false;
+    wk_offset_line la, lb;
+    wk_point o = {0, 0}, vel;
+    wk_offset_line_of_edge_at(P, wk_polygon_prev(P, v), o, &la);
+    wk_offset_line_of_edge_at(P, v, o, &lb);
+    return wk_vertex_velocity(&la, &lb, &vel) == WK_VEL_REGULAR;
+}
+
 /* Direction and speed of reflex vertex v (coordinates relative to c). */
 static void motion(const wk_polygon *P, uint32_t v, wk_point c, wk_motorcycle *m) {
     wk_offset_line la, lb;
@@ -544,7 +559,7 @@ static wk_status shoot_all(wk_run *R, const wk_polygon *P, const wk_polygon *Q, 
     wk_status st = wk_ray_shooter_init(R, &sh, Q);
     if (st != WK_OK) return st;
     for (uint32_t i = 0, j = 0; i < P->n && j < r; i++) {
-        if (!wk_polygon_is_reflex_counted(R, P, i)) continue;
+        if (!launches(R, P, i)) continue;
         wk_motorcycle *g = &m[j++];
         g->vertex = i;
         g->o = Q->p[i];
@@ -706,7 +721,7 @@ static wk_status build(wk_run *R, const wk_polygon *P, bool use_grid, wk_motorcy
     G->eps_d = ts * WK_TOL_REL * wk_polygon_scale(P);
     G->eps_t = WK_TOL_TIME * G->eps_d / wmax;
     uint32_t r = 0;
-    for (uint32_t i = 0; i < P->n; i++) r += wk_polygon_is_reflex(P, i);
+    for (uint32_t i = 0; i < P->n; i++) r += launches(NULL, P, i);
     G->m = WK_NEW_ARRAY(R, wk_motorcycle, r);
     if (!G->m) goto fail;
     G->n = r;
@@ -820,7 +835,7 @@ bool wk_motorcycle_graph_check(const wk_motorcycle_graph *G, const wk_polygon *P
     wk_point c = G->centre;
     uint32_t r = 0;
     for (uint32_t v = 0; v < P->n; v++) {
-        if (!wk_polygon_is_reflex(P, v)) continue;
+        if (!launches(NULL, P, v)) continue;
         if (r >= G->n) return fail_why(why, size, "more reflex vertices than %u motorcycles", G->n);
         if (G->m[r].vertex != v)
             return fail_why(why, size, "motorcycle %u starts at vertex %u, want %u", r,
