@@ -62,7 +62,7 @@
 #define DBG(...) ((void)0)
 #endif
 
-enum { MC_SWITCH = 0, MC_START = 1, MC_FRONT = 2 };
+enum { MC_SWITCH = 0, MC_START = 1, MC_FRONT = 2, MC_BSWITCH = 3, MC_DONE = 4 };
 
 /* A crossing on a trace: at lam from its origin, with trace `other`. */
 typedef struct mc_cross {
@@ -86,6 +86,13 @@ typedef struct mc_seg {
     uint8_t ev_end;      /* switch: 0 F leaves over pa, 1 over pb */
     bool hold;           /* F has met v: no switch until the next group */
     uint32_t probe;      /* held without F: v's split is searched next to this piece */
+    /* A ghost: v died before the end of its trace while other traces wait
+    ** at resting Steiner vertices ahead of it (their guard).  The trace's
+    ** unswept part is then [B, F], B the moving Steiner vertex on piece
+    ** ba -> bb where the wavefront crosses the trace (002 keeps this part of
+    ** M(G) in its extended wavefront); B cuts those traces when it passes. */
+    bool ghost;
+    uint32_t ba, bb, next_b, prev_b;
     uint32_t mark;
 } mc_seg;
 
@@ -95,6 +102,7 @@ typedef struct mc_state {
     uint32_t n_s, cap_s;
     uint32_t *seg_of;    /* per wavefront vertex: its trace or WK_NONE */
     uint32_t *fhead;     /* per wavefront vertex a: first trace with F on a -> a.next */
+    uint32_t *bhead;     /* ... and first ghost with B on a -> a.next */
     uint32_t cap_v;
     wk_event_queue Q;
     uint32_t *todo;
@@ -103,6 +111,8 @@ typedef struct mc_state {
     uint32_t n_ext, cap_ext;
     uint32_t *held;      /* traces with hold set */
     uint32_t n_held, cap_held;
+    uint32_t *bt;        /* scratch: ghosts whose B piece the group touched */
+    uint32_t n_bt, cap_bt;
     uint32_t *unknown;   /* traces whose F became unknown since the last group */
     uint32_t n_unknown, cap_unknown;
     double guard_t;
@@ -124,6 +134,14 @@ static double lambda_of(const mc_seg *S, wk_point p) {
 static double lambda_v(const wk_wavefront *W, const mc_seg *S, double t) {
     return lambda_of(S, wk_wf_position(W, S->v, t));
 }
+
+/* The near end of the unswept part: v, or B for a ghost. */
+static double lambda_lo(const wk_wavefront *W, const mc_seg *S, double t) {
+    if (!S->ghost) return lambda_v(W, S, t);
+    return lambda_on_line(S, wk_wf_line(W, wk_wf_edge_out(W, S->ba)), t);
+}
+
+static bool live(const mc_seg *S) { return S->v != WK_NONE || S->ghost; }
 
 /* F's place along the trace: NaN if unknown, +inf while beyond. */
 static double lambda_f(const wk_wavefront *W, const mc_seg *S, double t) {
@@ -189,20 +207,25 @@ static wk_status ensure_vertex_arrays(mc_state *A, uint32_t nv) {
     while (ncap < nv) ncap *= 2;
     uint32_t *so = WK_NEW_ARRAY(A->R, uint32_t, ncap);
     uint32_t *fh = so ? WK_NEW_ARRAY(A->R, uint32_t, ncap) : NULL;
-    if (!fh) {
+    uint32_t *bh = fh ? WK_NEW_ARRAY(A->R, uint32_t, ncap) : NULL;
+    if (!bh) {
         if (so) WK_FREE_ARRAY(A->R, so, ncap);
+        if (fh) WK_FREE_ARRAY(A->R, fh, ncap);
         return A->R->err.code;
     }
     for (uint32_t i = 0; i < ncap; i++) {
         so[i] = i < A->cap_v ? A->seg_of[i] : WK_NONE;
         fh[i] = i < A->cap_v ? A->fhead[i] : WK_NONE;
+        bh[i] = i < A->cap_v ? A->bhead[i] : WK_NONE;
     }
     if (A->cap_v) {
         WK_FREE_ARRAY(A->R, A->seg_of, A->cap_v);
         WK_FREE_ARRAY(A->R, A->fhead, A->cap_v);
+        WK_FREE_ARRAY(A->R, A->bhead, A->cap_v);
     }
     A->seg_of = so;
     A->fhead = fh;
+    A->bhead = bh;
     A->cap_v = ncap;
     return WK_OK;
 }
@@ -225,6 +248,25 @@ static void link_f(mc_state *A, wk_wavefront *W, uint32_t si, uint32_t a) {
     S->next_on = A->fhead[a];
     if (S->next_on != WK_NONE) A->s[S->next_on].prev_on = si;
     A->fhead[a] = si;
+}
+
+static void unlink_b(mc_state *A, uint32_t si) {
+    mc_seg *S = &A->s[si];
+    if (S->ba == WK_NONE) return;
+    if (S->prev_b != WK_NONE) A->s[S->prev_b].next_b = S->next_b;
+    else A->bhead[S->ba] = S->next_b;
+    if (S->next_b != WK_NONE) A->s[S->next_b].prev_b = S->prev_b;
+    S->ba = S->bb = S->next_b = S->prev_b = WK_NONE;
+}
+
+static void link_b(mc_state *A, wk_wavefront *W, uint32_t si, uint32_t a) {
+    mc_seg *S = &A->s[si];
+    S->ba = a;
+    S->bb = wk_wf_next(W, a);
+    S->prev_b = WK_NONE;
+    S->next_b = A->bhead[a];
+    if (S->next_b != WK_NONE) A->s[S->next_b].prev_b = si;
+    A->bhead[a] = si;
 }
 
 /* Where the ray o + lambda u (lambda > lambda0) meets piece a -> a.next at
@@ -288,59 +330,87 @@ static uint32_t shoot(mc_state *A, const wk_wavefront *W, const mc_seg *S, uint3
 
 /* --------------------------------------------------------------- events */
 
+/* When the moving Steiner vertex of the trace on piece a -> b (on a's
+** offset line) leaves the piece over one of its ends: *te (INFINITY if
+** never) and *end (0 over a, 1 over b).  l0, l1: its place at now, now + 1. */
+static void piece_exit(const wk_wavefront *W, const mc_seg *S, uint32_t a, uint32_t b, double now,
+                       double l0, double l1, double *te, uint8_t *end) {
+    const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+    *te = INFINITY;
+    wk_point f0 = {S->o.x + l0 * S->u.x, S->o.y + l0 * S->u.y};
+    wk_point f1 = {S->o.x + l1 * S->u.x, S->o.y + l1 * S->u.y};
+    wk_point a0 = wk_wf_position(W, a, now), a1 = wk_wf_position(W, a, now + 1);
+    wk_point b0 = wk_wf_position(W, b, now), b1 = wk_wf_position(W, b, now + 1);
+    double sa0 = (f0.x - a0.x) * L->ux + (f0.y - a0.y) * L->uy;
+    double sa1 = (f1.x - a1.x) * L->ux + (f1.y - a1.y) * L->uy;
+    double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
+    double sb1 = (b1.x - f1.x) * L->ux + (b1.y - f1.y) * L->uy;
+    double ra = sa1 - sa0, rb = sb1 - sb0;
+    /* riding along with an end vertex (that vertex moves on the trace
+    ** itself: head-on reflex vertices) never leaves the piece */
+    double tiny = WK_RIDE_ALONG_REL * (fabs(l1 - l0) + L->w);
+    if (ra < -tiny) {
+        double t = now + (sa0 > 0 ? sa0 : 0) / -ra;
+        if (t < *te) *te = t, *end = 0;
+    }
+    if (rb < -tiny) {
+        double t = now + (sb0 > 0 ? sb0 : 0) / -rb;
+        if (t < *te) *te = t, *end = 1;
+    }
+}
+
 static void seg_event(mc_state *A, wk_wavefront *W, uint32_t si) {
     mc_seg *S = &A->s[si];
     double now = wk_wf_now(W);
     (void)A;
     S->ev_t = INFINITY;
     S->ev_kind = MC_SWITCH;
-    if (S->v == WK_NONE) return;
+    if (!live(S)) return;
+    double lf0 = NAN, lf1 = NAN;
     if (S->pa != WK_NONE && !S->hold) {
         const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, S->pa));
         double l0 = lambda_on_line(S, L, now), l1 = lambda_on_line(S, L, now + 1);
+        lf0 = l0, lf1 = l1;
         if (isfinite(l0) && isfinite(l1)) {
-            wk_point f0 = {S->o.x + l0 * S->u.x, S->o.y + l0 * S->u.y};
-            wk_point f1 = {S->o.x + l1 * S->u.x, S->o.y + l1 * S->u.y};
-            wk_point a0 = wk_wf_position(W, S->pa, now), a1 = wk_wf_position(W, S->pa, now + 1);
-            wk_point b0 = wk_wf_position(W, S->pb, now), b1 = wk_wf_position(W, S->pb, now + 1);
-            double sa0 = (f0.x - a0.x) * L->ux + (f0.y - a0.y) * L->uy;
-            double sa1 = (f1.x - a1.x) * L->ux + (f1.y - a1.y) * L->uy;
-            double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
-            double sb1 = (b1.x - f1.x) * L->ux + (b1.y - f1.y) * L->uy;
-            double ra = sa1 - sa0, rb = sb1 - sb0;
-            double tiny = WK_RIDE_ALONG_REL * (fabs(l1 - l0) + L->w);
-            if (ra < -tiny) {
-                double te = now + (sa0 > 0 ? sa0 : 0) / -ra;
-                if (te < S->ev_t) S->ev_t = te, S->ev_kind = MC_SWITCH, S->ev_end = 0;
-            }
-            if (rb < -tiny) {
-                double te = now + (sb0 > 0 ? sb0 : 0) / -rb;
-                if (te < S->ev_t) S->ev_t = te, S->ev_kind = MC_SWITCH, S->ev_end = 1;
-            }
+            double te;
+            uint8_t end = 0;
+            piece_exit(W, S, S->pa, S->pb, now, l0, l1, &te, &end);
+            if (te < S->ev_t) S->ev_t = te, S->ev_kind = MC_SWITCH, S->ev_end = end;
             if (S->xf.other != WK_NONE) {
                 double target = S->xf.lam, rate = l1 - l0;
                 if (rate < 0) {
-                    double te = now + (l0 > target ? (l0 - target) : 0) / -rate;
-                    if (te < S->ev_t) S->ev_t = te, S->ev_kind = MC_START;
+                    double t = now + (l0 > target ? (l0 - target) : 0) / -rate;
+                    if (t < S->ev_t) S->ev_t = t, S->ev_kind = MC_START;
                 }
             }
         }
     }
-    if (S->xv.other != WK_NONE) {
-        wk_point vel = wk_wf_velocity(W, S->v);
-        double rate = vel.x * S->u.x + vel.y * S->u.y;
-        double lv = lambda_v(W, S, now);
+    double lo0 = lambda_lo(W, S, now), lo1 = lambda_lo(W, S, now + 1);
+    if (S->xv.other != WK_NONE && isfinite(lo0) && isfinite(lo1)) {
+        double rate = lo1 - lo0;
         if (rate > 0) {
-            double te = now + (S->xv.lam > lv ? S->xv.lam - lv : 0) / rate;
-            if (te < S->ev_t) S->ev_t = te, S->ev_kind = MC_FRONT;
+            double t = now + (S->xv.lam > lo0 ? S->xv.lam - lo0 : 0) / rate;
+            if (t < S->ev_t) S->ev_t = t, S->ev_kind = MC_FRONT;
         }
+    }
+    if (!S->ghost || !isfinite(lo0) || !isfinite(lo1)) return;
+    double te;
+    uint8_t end = 0;
+    piece_exit(W, S, S->ba, S->bb, now, lo0, lo1, &te, &end);
+    if (te < S->ev_t) S->ev_t = te, S->ev_kind = MC_BSWITCH, S->ev_end = end;
+    /* B meets F (or the end, F beyond): the unswept part is gone */
+    double hi0 = S->beyond ? S->len : lf0, hi1 = S->beyond ? S->len : lf1;
+    if (isfinite(hi0) && isfinite(hi1)) {
+        double gap = hi0 - lo0, rate = (hi1 - hi0) - (lo1 - lo0);
+        double t = gap <= 0 ? now : rate < 0 ? now + gap / -rate : INFINITY;
+        if (t < S->ev_t) S->ev_t = t, S->ev_kind = MC_DONE;
     }
 }
 
 static wk_status schedule_seg(mc_state *A, wk_wavefront *W, uint32_t si) {
     seg_event(A, W, si);
     mc_seg *S = &A->s[si];
-    DBG("    sched seg %u v %u at %.9g: ev %.9g kind %d pa %d xf(%.6g,%d) xv(%.6g,%d) lv %.6g\n", si, S->v, wk_wf_now(W), S->ev_t, S->ev_kind, (int)S->pa, S->xf.lam, (int)S->xf.other, S->xv.lam, (int)S->xv.other, S->v == WK_NONE ? 0 : lambda_v(W, S, wk_wf_now(W)));
+    DBG("    sched seg %u v %u ghost %d at %.9g: ev %.9g kind %d pa %d xf(%.6g,%d) xv(%.6g,%d) lo %.6g\n", si, S->v, S->ghost, wk_wf_now(W), S->ev_t, S->ev_kind, (int)S->pa, S->xf.lam, (int)S->xf.other, S->xv.lam, (int)S->xv.other, live(S) ? lambda_lo(W, S, wk_wf_now(W)) : 0);
     if (!isfinite(S->ev_t)) {
         wk_event_queue_remove(A->R, &A->Q, si);
         return WK_OK;
@@ -352,7 +422,7 @@ static wk_status schedule_seg(mc_state *A, wk_wavefront *W, uint32_t si) {
 /* Next crossings of trace si from where v and F are now. */
 static wk_status arm_segment(mc_state *A, wk_wavefront *W, uint32_t si) {
     mc_seg *S = &A->s[si];
-    double t = wk_wf_now(W), lf = lambda_f(W, S, t), lv = lambda_v(W, S, t);
+    double t = wk_wf_now(W), lf = lambda_f(W, S, t), lv = lambda_lo(W, S, t);
     S->xf = S->pa != WK_NONE && isfinite(lf) ? next_down(S, lf, WK_NONE) : NO_CROSS;
     if (S->xf.other == WK_NONE) S->xf = NO_CROSS;
     S->xv = next_up(S, lv < 0 ? 0 : lv, WK_NONE);
@@ -389,7 +459,7 @@ static bool guarded(const mc_state *A, const wk_wavefront *W, uint32_t si, doubl
         const mc_cross *c = &S->x[k];
         if (fabs(c->lam - S->len) > slack || c->other >= A->n_s) continue;
         const mc_seg *T = &A->s[c->other];
-        if (T->v != WK_NONE && unswept(W, T, lambda_of(T, X), t)) return true;
+        if (live(T) && unswept(W, T, lambda_of(T, X), t)) return true;
     }
     return false;
 }
@@ -412,7 +482,7 @@ static wk_status skipped(mc_state *A, const wk_wavefront *W, uint32_t sj, double
         const mc_cross *c = &T->x[k];
         if (!(c->lam > new_lf + slack && c->lam < old_lf - slack) || c->other >= A->n_s) continue;
         const mc_seg *S = &A->s[c->other];
-        if (S->v != WK_NONE && S->beyond && ends_on(A, c->other, sj, slack) &&
+        if (live(S) && S->beyond && ends_on(A, c->other, sj, slack) &&
             queue_ext(A, c->other) != WK_OK)
             return A->R->err.code;
         T = &A->s[sj];
@@ -455,6 +525,7 @@ static wk_status new_segment(mc_state *A, uint32_t v, wk_point o, wk_point u, do
     S->u = u;
     S->len = len;
     S->pa = S->pb = S->next_on = S->prev_on = S->probe = WK_NONE;
+    S->ba = S->bb = S->next_b = S->prev_b = WK_NONE;
     S->xf = S->xv = NO_CROSS;
     A->seg_of[v] = si;
     *out = si;
@@ -466,7 +537,7 @@ static wk_status new_segment(mc_state *A, uint32_t v, wk_point o, wk_point u, do
 static wk_status list_crossings(mc_state *A, wk_wavefront *W, uint32_t si, double l0, double l1) {
     double t = wk_wf_now(W), eps = wk_wf_eps_d(W);
     for (uint32_t j = 0; j < A->n_s; j++) {
-        if (j == si || A->s[j].v == WK_NONE) continue;
+        if (j == si || !live(&A->s[j])) continue;
         const mc_seg *S = &A->s[si], *T = &A->s[j];
         double den = S->u.x * T->u.y - S->u.y * T->u.x;
         if (fabs(den) < WK_ARR_PARALLEL) continue;
@@ -474,11 +545,11 @@ static wk_status list_crossings(mc_state *A, wk_wavefront *W, uint32_t si, doubl
         double a = (ex * T->u.y - ey * T->u.x) / den; /* on S */
         double b = (ex * S->u.y - ey * S->u.x) / den; /* on T */
         if (a < l0 - eps || a > l1 + eps || b > T->len + eps) continue;
-        if (b < lambda_v(W, T, t) - eps) continue;
+        if (b < lambda_lo(W, T, t) - eps) continue;
         if (add_cross(A, si, a, j) != WK_OK || add_cross(A, j, b, si) != WK_OK) return A->R->err.code;
         /* the new crossing may come before the ones j has fetched */
         mc_seg *J = &A->s[j];
-        double lv = lambda_v(W, J, t), lf = lambda_f(W, J, t);
+        double lv = lambda_lo(W, J, t), lf = lambda_f(W, J, t);
         bool again = false;
         if (b > lv && cross_less(b, si, J->xv.lam, J->xv.other)) J->xv = (mc_cross){b, si}, again = true;
         if (J->pa != WK_NONE && isfinite(lf) && b < lf &&
@@ -512,8 +583,11 @@ static wk_status late_segment(mc_state *A, wk_wavefront *W, uint32_t v, double t
 
 /* The trace si waited at its end for a guard that ended early: extend it
 ** to where its ray meets the wavefront now. */
+static wk_status kill_ghost(mc_state *A, wk_wavefront *W, uint32_t si, double t);
+
 static wk_status extend_segment(mc_state *A, wk_wavefront *W, uint32_t si, double t) {
     mc_seg *S = &A->s[si];
+    if (S->ghost && S->beyond) return kill_ghost(A, W, si, t); /* nothing to extend: v is gone */
     if (S->v == WK_NONE || !S->beyond) return WK_OK;
     wk_count(A->R, WK_VC_trace_extensions, 1);
     double old = S->len;
@@ -550,7 +624,7 @@ static wk_status release_guards(mc_state *A, const wk_wavefront *W, uint32_t sj,
         const mc_cross *c = &T->x[k];
         if (c->lam < lam || c->other >= A->n_s) continue;
         const mc_seg *S = &A->s[c->other];
-        if (S->v != WK_NONE && S->beyond && ends_on(A, c->other, sj, slack) &&
+        if (live(S) && S->beyond && ends_on(A, c->other, sj, slack) &&
             queue_ext(A, c->other) != WK_OK)
             return A->R->err.code;
         T = &A->s[sj];
@@ -558,19 +632,96 @@ static wk_status release_guards(mc_state *A, const wk_wavefront *W, uint32_t sj,
     return WK_OK;
 }
 
+/* Among the pieces next to the last group's fresh vertices, the one that
+** crosses trace si within WK_RELOCATE_SLACK * eps_d of lam at time t and
+** moves on along it (its crossing moves away from o): where the wavefront
+** sweeps the trace on from lam.  WK_NONE if there is none. */
+static uint32_t forward_piece(const wk_wavefront *W, const mc_seg *S, double lam, double t) {
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W), best = INFINITY, mu;
+    uint32_t pick = WK_NONE;
+    const uint32_t *fresh, *ended;
+    uint32_t n_fresh, n_ended;
+    wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    for (uint32_t i = 0; i < n_fresh; i++) {
+        uint32_t g = fresh[i];
+        if (!wk_wf_alive(W, g)) continue;
+        uint32_t two[2] = {g, wk_wf_prev(W, g)};
+        for (int j = 0; j < 2; j++) {
+            uint32_t a = two[j];
+            double at = hit_piece(W, S, a, t, lam - slack, &mu);
+            if (!(fabs(at - lam) <= slack) || !(fabs(at - lam) < best)) continue;
+            const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+            if (!(lambda_on_line(S, L, t + 1) > lambda_on_line(S, L, t))) continue;
+            best = fabs(at - lam);
+            pick = a;
+        }
+    }
+    return pick;
+}
+
+/* Some trace waits with F beyond at a resting Steiner vertex of si past
+** lam (si guards it). */
+static bool guards_ahead(const mc_state *A, const wk_wavefront *W, uint32_t si, double lam) {
+    const mc_seg *T = &A->s[si];
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W);
+    for (uint32_t k = 0; k < T->nx; k++) {
+        const mc_cross *c = &T->x[k];
+        if (c->lam < lam - wk_wf_eps_d(W) || c->other >= A->n_s) continue;
+        const mc_seg *S = &A->s[c->other];
+        if (live(S) && S->beyond && ends_on(A, c->other, si, slack)) return true;
+    }
+    return false;
+}
+
+static void drop(mc_state *A, uint32_t si) {
+    mc_seg *S = &A->s[si];
+    unlink_f(A, si);
+    unlink_b(A, si);
+    if (S->v != WK_NONE && S->v < A->cap_v && A->seg_of[S->v] == si) A->seg_of[S->v] = WK_NONE;
+    S->v = WK_NONE;
+    S->ghost = false;
+    wk_event_queue_remove(A->R, &A->Q, si);
+}
+
+/* A ghost whose B or F can no longer be followed locally: the traces it
+** guards are extended, and it goes. */
+static wk_status kill_ghost(mc_state *A, wk_wavefront *W, uint32_t si, double t) {
+    mc_seg *S = &A->s[si];
+    if (!S->ghost) return WK_OK;
+    double lo = lambda_lo(W, S, t);
+    if (release_guards(A, W, si, (isfinite(lo) ? lo : 0) - wk_wf_eps_d(W)) != WK_OK)
+        return A->R->err.code;
+    drop(A, si);
+    return WK_OK;
+}
+
+/* v of trace si died at time t.  If F was there (v met F: a split) the
+** trace is done.  Otherwise the part beyond v is still unswept; when it
+** guards other traces it lives on as a ghost with B on the piece that
+** sweeps it on from where v ended, else it goes (and if no such piece is
+** found, the traces it guards are extended). */
 static wk_status remove_segment(mc_state *A, wk_wavefront *W, uint32_t si, double t) {
     mc_seg *S = &A->s[si];
     DBG("t=%.9g remove seg %u v %u lv %.9g lf %.9g len %.9g\n", t, si, S->v, lambda_v(W, S, t), lambda_f(W, S, t), S->len);
-    /* where v ended: beyond it the trace is unswept unless F was there */
     double lv = lambda_v(W, S, t), lf = lambda_f(W, S, t);
-    if (!(isfinite(lf) && lf <= lv + WK_RELOCATE_SLACK * wk_wf_eps_d(W)) &&
-        release_guards(A, W, si, lv - wk_wf_eps_d(W)) != WK_OK)
-        return A->R->err.code;
-    S = &A->s[si];
-    unlink_f(A, si);
-    A->seg_of[S->v] = WK_NONE;
-    S->v = WK_NONE;
-    wk_event_queue_remove(A->R, &A->Q, si);
+    bool met = isfinite(lf) && lf <= lv + WK_RELOCATE_SLACK * wk_wf_eps_d(W);
+    if (!met && guards_ahead(A, W, si, lv)) {
+        uint32_t a = forward_piece(W, S, lv, t);
+        if (a != WK_NONE && (S->pa != WK_NONE || S->beyond)) {
+            wk_count(A->R, WK_VC_ghost_traces, 1);
+            A->seg_of[S->v] = WK_NONE;
+            S->v = WK_NONE;
+            S->ghost = true;
+            S->hold = false;
+            S->probe = WK_NONE;
+            link_b(A, W, si, a);
+            S = &A->s[si];
+            S->xv = next_up(S, lv - wk_wf_eps_d(W), WK_NONE);
+            return schedule_seg(A, W, si);
+        }
+        if (release_guards(A, W, si, lv - wk_wf_eps_d(W)) != WK_OK) return A->R->err.code;
+    }
+    drop(A, si);
     return WK_OK;
 }
 
@@ -726,7 +877,7 @@ static bool relocate_locally(mc_state *A, wk_wavefront *W, uint32_t si, double t
     mc_seg *S = &A->s[si];
     double old = lambda_on_line(S, wk_wf_line(W, wk_wf_edge_out(W, S->pa)), t);
     if (!isfinite(old)) return false;
-    double lv = lambda_v(W, S, t), best = INFINITY, mu;
+    double lv = lambda_lo(W, S, t), best = INFINITY, mu;
     uint32_t pick = WK_NONE;
     const uint32_t *fresh, *ended;
     uint32_t n_fresh, n_ended;
@@ -752,7 +903,7 @@ static bool relocate_locally(mc_state *A, wk_wavefront *W, uint32_t si, double t
 }
 
 static wk_status queue_todo(mc_state *A, uint32_t si) {
-    if (A->s[si].mark == A->stamp || A->s[si].v == WK_NONE) return WK_OK;
+    if (A->s[si].mark == A->stamp || !live(&A->s[si])) return WK_OK;
     A->s[si].mark = A->stamp;
     if (WK_GROW(A->R, A->todo, A->cap_todo, A->n_todo + 1) != WK_OK) return A->R->err.code;
     A->todo[A->n_todo++] = si;
@@ -792,6 +943,36 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
                 if (queue_todo(A, si) != WK_OK) return R->err.code;
         }
     }
+    /* ghosts whose B was on a piece the group changed: B on the piece that
+    ** sweeps the trace on from the same place, else the ghost goes */
+    A->n_bt = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        uint32_t n = pass ? n_fresh : n_ended;
+        const uint32_t *list = pass ? fresh : ended;
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t a = list[i];
+            if (a >= A->cap_v) continue;
+            for (uint32_t si = A->bhead[a]; si != WK_NONE; si = A->s[si].next_b) {
+                if (WK_GROW(R, A->bt, A->cap_bt, A->n_bt + 1) != WK_OK) return R->err.code;
+                A->bt[A->n_bt++] = si;
+            }
+        }
+    }
+    for (uint32_t i = 0; i < A->n_bt; i++) {
+        uint32_t si = A->bt[i];
+        mc_seg *S = &A->s[si];
+        if (!S->ghost || S->ba == WK_NONE) continue;
+        if (wk_wf_alive(W, S->ba) && wk_wf_next(W, S->ba) == S->bb) continue;
+        double lo = lambda_lo(W, S, t);
+        uint32_t a = isfinite(lo) ? forward_piece(W, S, lo, t) : WK_NONE;
+        if (a == WK_NONE) {
+            if (kill_ghost(A, W, si, t) != WK_OK) return R->err.code;
+            continue;
+        }
+        unlink_b(A, si);
+        link_b(A, W, si, a);
+        if (schedule_seg(A, W, si) != WK_OK) return R->err.code;
+    }
     for (uint32_t i = 0; i < n_ended; i++) {
         uint32_t d = ended[i];
         if (d < A->cap_v && A->seg_of[d] != WK_NONE && remove_segment(A, W, A->seg_of[d], t) != WK_OK)
@@ -808,14 +989,19 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < A->n_todo; i++) {
         uint32_t si = A->todo[i];
         mc_seg *S = &A->s[si];
-        if (S->v == WK_NONE || !wk_wf_alive(W, S->v) || S->beyond) continue;
+        if (!live(S) || S->beyond || (!S->ghost && !wk_wf_alive(W, S->v))) continue;
         if (S->pa != WK_NONE && wk_wf_alive(W, S->pa) && wk_wf_next(W, S->pa) == S->pb) {
             if (schedule_seg(A, W, si) != WK_OK) return R->err.code; /* released hold */
             continue;
         }
         if (S->pa != WK_NONE && relocate_locally(A, W, si, t)) {
-            if (schedule_seg(A, W, si) != WK_OK || wk_wf_reschedule(W, A->s[si].v) != WK_OK)
+            if (schedule_seg(A, W, si) != WK_OK ||
+                (S->v != WK_NONE && wk_wf_reschedule(W, A->s[si].v) != WK_OK))
                 return R->err.code;
+            continue;
+        }
+        if (S->ghost) {
+            if (kill_ghost(A, W, si, t) != WK_OK) return R->err.code;
             continue;
         }
         if (place_f(A, W, si, t, true) != WK_OK || arm_segment(A, W, si) != WK_OK || wk_wf_reschedule(W, A->s[si].v) != WK_OK)
@@ -850,7 +1036,11 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     link_f(A, W, sj, a);
     double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
     T = &A->s[sj];
-    if (!(l1 < l0) && fabs(lam - lambda_v(W, T, t)) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W)) {
+    if (!(l1 < l0) && T->ghost) {
+        /* a ghost's F facing away: nothing to follow without a shot */
+        if (kill_ghost(A, W, sj, t) != WK_OK) return A->R->err.code;
+        return flush_extensions(A, W, t);
+    } else if (!(l1 < l0) && fabs(lam - lambda_v(W, T, t)) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W)) {
         /* v' is at X itself as the piece passes (two reflex vertices
         ** meeting; v' at its crash point): its split is with a piece next
         ** to the cutting one, found by the reference's test over those
@@ -880,7 +1070,7 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         for (uint32_t k = 0; k < A->s[sj].nx; k++) {
             mc_cross c = A->s[sj].x[k];
             if (fabs(c.lam - at) > slack) continue;
-            if (c.other == via || c.other >= A->n_s || A->s[c.other].v == WK_NONE) continue;
+            if (c.other == via || c.other >= A->n_s || !live(&A->s[c.other])) continue;
             const mc_seg *O = &A->s[c.other];
             wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
             double lo = lambda_of(O, X);
@@ -890,13 +1080,13 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         T->xf = next_down(T, at, via);
     }
     if (schedule_seg(A, W, sj) != WK_OK) return A->R->err.code;
-    if (wk_wf_reschedule(W, A->s[sj].v) != WK_OK) return A->R->err.code;
+    if (A->s[sj].v != WK_NONE && wk_wf_reschedule(W, A->s[sj].v) != WK_OK) return A->R->err.code;
     return flush_extensions(A, W, t);
 }
 
 /* X (at lx on T) is in T's unswept part. */
 static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t) {
-    double lv = lambda_v(W, T, t), lf = lambda_f(W, T, t);
+    double lv = lambda_lo(W, T, t), lf = lambda_f(W, T, t);
     return lx > lv - wk_wf_eps_d(W) && (!isfinite(lf) || lx < lf - wk_wf_eps_d(W));
 }
 
@@ -912,7 +1102,31 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
         return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "motorcycle: no progress at t = %.17g", t);
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
     DBG("t=%.9g seg %u v %u kind %d pa %d beyond %d xf(%.6g,%d) xv(%.6g,%d) len %.6g\n", t, si, S->v, S->ev_kind, (int)S->pa, S->beyond, S->xf.lam, (int)S->xf.other, S->xv.lam, (int)S->xv.other, S->len);
-    if (S->v == WK_NONE) return WK_OK;
+    if (!live(S)) return WK_OK;
+    if (S->ev_kind == MC_DONE) { /* a ghost's B met F: its trace is swept */
+        drop(A, si);
+        return WK_OK;
+    }
+    if (S->ev_kind == MC_BSWITCH) {
+        /* B leaves its piece over one of its ends, onto the next piece; over
+        ** a reflex vertex only if that piece carries B on (else the ghost
+        ** goes: nothing to follow without a shot) */
+        uint32_t u = S->ev_end ? S->bb : S->ba;
+        uint32_t a = S->ev_end ? S->bb : wk_wf_prev(W, S->ba);
+        unlink_b(A, si);
+        link_b(A, W, si, a);
+        wk_notify_event(R, WK_VC_switch_events, &ev);
+        const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+        S = &A->s[si];
+        bool on = lambda_on_line(S, L, t + 1) > lambda_on_line(S, L, t);
+        seg_event(A, W, si);
+        bool bounce = A->s[si].ev_kind == MC_BSWITCH && A->s[si].ev_t <= t;
+        if ((wk_wf_reflex(W, u) && !on) || bounce) {
+            if (kill_ghost(A, W, si, t) != WK_OK) return R->err.code;
+            return flush_extensions(A, W, t);
+        }
+        return schedule_seg(A, W, si);
+    }
     if (S->ev_kind == MC_SWITCH) {
         uint32_t old_pa = S->pa;
         uint32_t u = S->ev_end ? S->pb : S->pa;
@@ -922,7 +1136,7 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
         wk_notify_event(R, WK_VC_switch_events, &ev);
         seg_event(A, W, si);
         uint32_t v = A->s[si].v;
-        bool own = a == v || wk_wf_next(W, a) == v;
+        bool own = v != WK_NONE && (a == v || wk_wf_next(W, a) == v);
         if (own && fabs(lambda_f(W, &A->s[si], t) - lambda_v(W, &A->s[si], t)) <=
                        WK_RELOCATE_SLACK * wk_wf_eps_d(W)) {
             /* F passes v's neighbour onto v's own piece where it meets v:
@@ -946,6 +1160,10 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
             double l0 = lambda_on_line(&A->s[si], L, t), l1 = lambda_on_line(&A->s[si], L, t + 1);
             jump = !(l1 < l0);
         }
+        if ((jump || bounce) && A->s[si].ghost) {
+            if (kill_ghost(A, W, si, t) != WK_OK) return R->err.code;
+            return flush_extensions(A, W, t);
+        }
         if (own || jump || bounce) {
             if (place_f(A, W, si, t, true) != WK_OK) return R->err.code;
             seg_event(A, W, si);
@@ -958,13 +1176,14 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
             S->xf = S->pa != WK_NONE && isfinite(lf) ? next_down(S, lf, WK_NONE) : NO_CROSS;
         }
         S = &A->s[si];
-        if (schedule_seg(A, W, si) != WK_OK || wk_wf_reschedule(W, S->v) != WK_OK) return R->err.code;
+        if (schedule_seg(A, W, si) != WK_OK || (S->v != WK_NONE && wk_wf_reschedule(W, S->v) != WK_OK))
+            return R->err.code;
         return flush_extensions(A, W, t);
     }
     uint8_t kind = S->ev_kind;
     mc_cross x = kind == MC_START ? S->xf : S->xv;
     wk_notify_event(R, WK_VC_start_events, &ev);
-    uint32_t sj = x.other < A->n_s && A->s[x.other].v != WK_NONE ? x.other : WK_NONE;
+    uint32_t sj = x.other < A->n_s && live(&A->s[x.other]) ? x.other : WK_NONE;
     if (sj != WK_NONE) {
         const mc_seg *T = &A->s[sj];
         wk_point X = {S->o.x + x.lam * S->u.x, S->o.y + x.lam * S->u.y};
@@ -973,6 +1192,8 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
             uint32_t pick = WK_NONE;
             if (kind == MC_START) {
                 pick = S->pa;
+            } else if (S->ghost) {
+                pick = S->ba; /* B's piece passes X */
             } else {
                 /* which of v's pieces faces v': the one whose crossing with
                 ** s' moves towards v' */
@@ -991,9 +1212,11 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
         }
     }
     S = &A->s[si];
+    if (!live(S)) return flush_extensions(A, W, t);
     if (kind == MC_START) S->xf = next_down(S, x.lam, x.other);
     else S->xv = next_up(S, x.lam, x.other);
-    return schedule_seg(A, W, si);
+    if (schedule_seg(A, W, si) != WK_OK) return R->err.code;
+    return flush_extensions(A, W, t);
 }
 
 static wk_status mc_check(void *ud, const wk_wavefront *W) {
@@ -1001,8 +1224,10 @@ static wk_status mc_check(void *ud, const wk_wavefront *W) {
     const char *name = wk_wf_polygon(W)->name;
     for (uint32_t si = 0; si < A->n_s; si++) {
         const mc_seg *S = &A->s[si];
-        if (S->v == WK_NONE) continue;
-        if (!wk_wf_alive(W, S->v) || A->seg_of[S->v] != si)
+        if (!live(S)) continue;
+        if (S->ghost && (S->ba == WK_NONE || !wk_wf_alive(W, S->ba) || wk_wf_next(W, S->ba) != S->bb))
+            return WK_FAIL(A->R, WK_EALGO, name, 0, "invariant: ghost trace %u's B is on a dead piece", si);
+        if (!S->ghost && (!wk_wf_alive(W, S->v) || A->seg_of[S->v] != si))
             return WK_FAIL(A->R, WK_EALGO, name, 0, "invariant: trace %u's vertex %u is gone", si, S->v);
         if (S->pa != WK_NONE && (!wk_wf_alive(W, S->pa) || wk_wf_next(W, S->pa) != S->pb))
             return WK_FAIL(A->R, WK_EALGO, name, 0, "invariant: trace %u's F is on a dead piece", si);
@@ -1044,9 +1269,11 @@ static wk_status motorcycle_run(wk_run *R, const wk_polygon *P, wk_skeleton **ou
     WK_FREE_ARRAY(R, A.ext, A.cap_ext);
     WK_FREE_ARRAY(R, A.unknown, A.cap_unknown);
     WK_FREE_ARRAY(R, A.held, A.cap_held);
+    WK_FREE_ARRAY(R, A.bt, A.cap_bt);
     if (A.cap_v) {
         WK_FREE_ARRAY(R, A.seg_of, A.cap_v);
         WK_FREE_ARRAY(R, A.fhead, A.cap_v);
+        WK_FREE_ARRAY(R, A.bhead, A.cap_v);
     }
     return st;
 }

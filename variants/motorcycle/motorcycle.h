@@ -19,6 +19,7 @@
     X(brute_force_split_scans, "splits searched over a whole cycle (F unknown or no trace yet)") \
     X(late_traces, "traces shot for reflex vertices that are not vertices of P")               \
     X(trace_extensions, "traces extended because the trace they crashed into ended early")      \
+    X(ghost_traces, "traces that outlived their vertex to guard the traces ending on them")    \
     X(ray_shots, "rays shot against the wavefront (O(cycle) each)")
 
 WK_VARIANT_COUNTER_ENUM(MC_COUNTER_LIST)
