@@ -110,7 +110,8 @@ static bool seed_take(expansion *e, int i) {
     return true;
 }
 
-/* cgal: unit weights only, and not above --cgal-max-n. */
+/* cgal: unit weights only, and not above --cgal-max-n; a variant without
+** WK_VARIANT_WEIGHTS (motorcycle): unit weights only. */
 static int variant_count(expansion *e) { return e->o->variants.n; }
 static bool variant_take(expansion *e, int i) {
     const char *var = e->o->variants.v[i];
@@ -119,6 +120,8 @@ static bool variant_take(expansion *e, int i) {
         if (strcmp(e->c.weights, "unit")) return false;
         if (e->o->cgal_max_n && e->n > e->o->cgal_max_n) return false;
     }
+    const wk_variant *V = wk_variant_find(var);
+    if (V && !(wk_variant_flags(V) & WK_VARIANT_WEIGHTS) && strcmp(e->c.weights, "unit")) return false;
     return true;
 }
 

@@ -873,15 +873,16 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     return st;
 }
 
-static bool relocate_locally(mc_state *A, wk_wavefront *W, uint32_t si, double t) {
-    mc_seg *S = &A->s[si];
-    double old = lambda_on_line(S, wk_wf_line(W, wk_wf_edge_out(W, S->pa)), t);
-    if (!isfinite(old)) return false;
-    double lv = lambda_lo(W, S, t), best = INFINITY, mu;
+/* The first of the fresh pieces along trace si beyond its near end at time
+** tt (end hits allowed or not), or WK_NONE; *at: where. */
+static uint32_t first_fresh(const wk_wavefront *W, const mc_seg *S, double tt, bool ends,
+                            double *at) {
+    double lv = lambda_lo(W, S, tt), mu;
     uint32_t pick = WK_NONE;
     const uint32_t *fresh, *ended;
     uint32_t n_fresh, n_ended;
     wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    *at = INFINITY;
     for (uint32_t i = 0; i < n_fresh; i++) {
         uint32_t g = fresh[i];
         if (!wk_wf_alive(W, g)) continue;
@@ -889,14 +890,34 @@ static bool relocate_locally(mc_state *A, wk_wavefront *W, uint32_t si, double t
         for (int j = 0; j < 2; j++) {
             uint32_t a = two[j];
             if (a == S->v || wk_wf_next(W, a) == S->v) continue;
-            double lam = hit_piece(W, S, a, t, lv, &mu);
-            if (lam < best && mu > WK_RAY_END_SNAP && mu < 1 - WK_RAY_END_SNAP) {
-                best = lam;
+            double lam = hit_piece(W, S, a, tt, lv, &mu);
+            if (lam < *at && (ends || (mu > WK_RAY_END_SNAP && mu < 1 - WK_RAY_END_SNAP))) {
+                *at = lam;
                 pick = a;
             }
         }
     }
-    if (pick == WK_NONE || !(fabs(best - old) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W))) return false;
+    return pick;
+}
+
+/* F's piece was replaced by the group: the wavefront is continuous, so F is
+** now on one of the new pieces at (nearly) the same place on the trace.  If
+** that place is a corner of the new pieces (the group's node), they are
+** looked at a moment later, when the corner has moved off the trace (as the
+** ray shot does, but over the fresh pieces only).  False if neither
+** finds F within WK_RELOCATE_SLACK * eps_d of where it was. */
+static bool relocate_locally(mc_state *A, wk_wavefront *W, uint32_t si, double t) {
+    mc_seg *S = &A->s[si];
+    double old = lambda_on_line(S, wk_wf_line(W, wk_wf_edge_out(W, S->pa)), t);
+    if (!isfinite(old)) return false;
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W), at;
+    uint32_t pick = first_fresh(W, S, t, false, &at);
+    if (pick == WK_NONE || !(fabs(at - old) <= slack)) {
+        double later = t + WK_RAY_RESHOOT_DELAY * wk_wf_eps_t(W);
+        pick = first_fresh(W, S, later, true, &at);
+        double was = lambda_on_line(S, wk_wf_line(W, wk_wf_edge_out(W, S->pa)), later);
+        if (pick == WK_NONE || !(fabs(at - was) <= slack)) return false;
+    }
     unlink_f(A, si);
     link_f(A, W, si, pick);
     return true;
@@ -1034,9 +1055,32 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     T = &A->s[sj];
     unlink_f(A, sj);
     link_f(A, W, sj, a);
-    double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
+    /* the stored crossing (lam is recomputed from the geometry) */
+    double at = lam, gap = INFINITY;
+    for (uint32_t k = 0; k < T->nx; k++)
+        if (T->x[k].other == via && fabs(T->x[k].lam - lam) < gap)
+            gap = fabs(T->x[k].lam - lam), at = T->x[k].lam;
+    /* The piece passes X now: every other trace through X (another trace's
+    ** end there, a simultaneous crash) with X unswept is cut there too (the
+    ** entries at X with a lower id than via would be skipped by the walk
+    ** down from (X, via); the others are met again as start events and
+    ** find X swept). */
+    double slack = WK_MC_STEINER_SLACK * wk_wf_eps_d(W);
+    for (uint32_t k = 0; k < A->s[sj].nx; k++) {
+        mc_cross c = A->s[sj].x[k];
+        if (fabs(c.lam - at) > slack) continue;
+        if (c.other == via || c.other >= A->n_s || !live(&A->s[c.other])) continue;
+        const mc_seg *O = &A->s[c.other];
+        wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
+        double lo = lambda_of(O, X);
+        if (unswept(W, O, lo, t) && cut(A, W, c.other, a, lo, sj) != WK_OK) return A->R->err.code;
+    }
     T = &A->s[sj];
-    if (!(l1 < l0) && T->ghost) {
+    double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
+    if (T->pa != a) {
+        /* a recursive cut moved F' on already (defensive: F' is at X, so
+        ** none should) */
+    } else if (!(l1 < l0) && T->ghost) {
         /* a ghost's F facing away: nothing to follow without a shot */
         if (kill_ghost(A, W, sj, t) != WK_OK) return A->R->err.code;
         return flush_extensions(A, W, t);
@@ -1056,27 +1100,6 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         double lf = lambda_f(W, T, t);
         T->xf = isfinite(lf) ? next_down(T, lf, WK_NONE) : NO_CROSS;
     } else {
-        /* from the stored crossing (lam is recomputed from the geometry) */
-        double at = lam, gap = INFINITY;
-        for (uint32_t k = 0; k < T->nx; k++)
-            if (T->x[k].other == via && fabs(T->x[k].lam - lam) < gap)
-                gap = fabs(T->x[k].lam - lam), at = T->x[k].lam;
-        /* F' is at X now: the other traces through X (another trace's
-        ** end there, a simultaneous crash) are passed at once (the entries
-        ** at X with a lower id than via would be skipped by the walk down
-        ** from (X, via); the others are met again as start events and
-        ** find X swept) */
-        double slack = WK_MC_STEINER_SLACK * wk_wf_eps_d(W);
-        for (uint32_t k = 0; k < A->s[sj].nx; k++) {
-            mc_cross c = A->s[sj].x[k];
-            if (fabs(c.lam - at) > slack) continue;
-            if (c.other == via || c.other >= A->n_s || !live(&A->s[c.other])) continue;
-            const mc_seg *O = &A->s[c.other];
-            wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
-            double lo = lambda_of(O, X);
-            if (unswept(W, O, lo, t) && cut(A, W, c.other, a, lo, sj) != WK_OK) return A->R->err.code;
-        }
-        T = &A->s[sj];
         T->xf = next_down(T, at, via);
     }
     if (schedule_seg(A, W, sj) != WK_OK) return A->R->err.code;

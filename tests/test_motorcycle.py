@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""test_motorcycle.py: the motorcycle variant (paper 002) against naive.
+
+Every generator family (bin/wskel-gen --list, the coastline and holes
+families included), n from 16 to 2,000 (WSKEL_MOTORCYCLE_MAX_N), unit
+weights, several seeds: bin/wskel --variant motorcycle --check must pass and
+give naive's skeleton (testlib.same_skeleton).  Small cases run with
+--check-invariants too (the finder's and the wavefront's invariants after
+every group).  The variant takes equal weights only: a weighted polygon is
+refused with exit 2 and a message naming the edge, never answered.  A sweep
+that compared nothing fails (the minimum is asserted).
+"""
+
+import os
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import testlib as tl  # noqa: E402
+
+MAX_N = int(os.environ.get("WSKEL_MOTORCYCLE_MAX_N", "2000"))
+SEEDS = int(os.environ.get("WSKEL_MOTORCYCLE_SEEDS", "3"))
+NS = [n for n in (16, 64, 256, 1000, 2000) if n <= MAX_N]
+INVARIANTS_MAX_N = 256
+
+
+def families():
+    rc, out, _ = tl.run([tl.WSKEL_GEN, "--list"])
+    assert rc == 0
+    return [line.split()[0] for line in out.splitlines() if line.strip()]
+
+
+class Motorcycle(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        tl.need(tl.WSKEL)
+        tl.need(tl.WSKEL_GEN)
+        cls.tmp = tempfile.mkdtemp(prefix="wskel-motorcycle-")
+
+    def gen(self, fam, n, seed, extra=()):
+        path = os.path.join(self.tmp, "%s-%d-%d.wpoly" % (fam, n, seed))
+        rc, _, _ = tl.run([tl.WSKEL_GEN, fam, "--n", str(n), "--seed", str(seed), "-o", path]
+                          + list(extra))
+        return path if rc == 0 else None
+
+    def compare(self, t, name, path, invariants):
+        rc, out_n, err_n = tl.run([tl.WSKEL, "--check", path])
+        if rc != 0:
+            t.case(["%s: naive exit %s: %s" % (name, rc, err_n.strip()[:200])], path)
+            return
+        args = [tl.WSKEL, "--variant", "motorcycle", "--check", "--stats", path]
+        if invariants:
+            args.insert(1, "--check-invariants")
+        rc, out, err = tl.run(args)
+        if rc != 0:
+            t.case(["%s: motorcycle exit %s: %s" % (name, rc, err.strip()[:200])], path)
+            return
+        ok, why = tl.same_skeleton(tl.json.loads(out_n), tl.json.loads(out))
+        t.case([] if ok else ["%s: differs from naive: %s" % (name, why[:200])], path)
+
+    def test_families(self):
+        t = tl.Tally("motorcycle vs naive, every family")
+        for fam in families():
+            for n in NS:
+                for seed in range(1, SEEDS + 1):
+                    extra = ["--holes", str(max(1, n // 60))] if fam == "holes" else []
+                    path = self.gen(fam, n, seed, extra)
+                    if path is None:
+                        t.skip("%s n=%d seed %d" % (fam, n, seed), "impossible parameters")
+                        continue
+                    self.compare(t, "%s n=%d seed %d" % (fam, n, seed), path,
+                                 n <= INVARIANTS_MAX_N)
+        t.report(self)
+        self.assertGreaterEqual(t.cases, len(NS) * SEEDS * 8, t.summary())
+
+    def test_convex_with_holes(self):
+        t = tl.Tally("motorcycle vs naive, convex polygons with holes")
+        for n, h in ((40, 3), (200, 12)):
+            for seed in range(1, SEEDS + 1):
+                path = self.gen("convex", n, seed, ["--holes", str(h)])
+                self.assertIsNotNone(path)
+                self.compare(t, "convex n=%d holes %d seed %d" % (n, h, seed), path, n <= 64)
+        t.report(self)
+        self.assertEqual(t.cases, 2 * SEEDS)
+
+    def test_weighted_is_refused(self):
+        path = self.gen("star", 50, 1, ["--weights", "int"])
+        self.assertIsNotNone(path)
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "motorcycle", path])
+        self.assertEqual(rc, 2, err)
+        self.assertIn("unit weights only", err)
+        self.assertEqual(out, "", "no skeleton for a refused input")
+
+
+if __name__ == "__main__":
+    unittest.main()
