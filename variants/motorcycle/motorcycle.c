@@ -1044,6 +1044,23 @@ static double mc_next_time(void *ud) {
 
 static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t);
 
+/* Of the pieces just before and after piece a, one that crosses trace T
+** within WK_MC_STEINER_SLACK * eps_d of lam at time t and whose crossing
+** moves towards T's near end; WK_NONE if neither does. */
+static uint32_t facing_piece(const wk_wavefront *W, const mc_seg *T, uint32_t a, double lam,
+                             double t) {
+    uint32_t cand[2] = {wk_wf_prev(W, a), wk_wf_next(W, a)};
+    double slack = WK_MC_STEINER_SLACK * wk_wf_eps_d(W);
+    for (int k = 0; k < 2; k++) {
+        uint32_t c = cand[k];
+        if (c == a || c == T->v || wk_wf_next(W, c) == T->v) continue;
+        const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, c));
+        double l0 = lambda_on_line(T, L, t), l1 = lambda_on_line(T, L, t + 1);
+        if (isfinite(l0) && isfinite(l1) && l1 < l0 && fabs(l0 - lam) <= slack) return c;
+    }
+    return WK_NONE;
+}
+
 /* Cut s' at lam (a crossing X): F' := X on piece a. */
 static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via) {
     mc_seg *T = &A->s[sj];
@@ -1077,7 +1094,20 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     }
     T = &A->s[sj];
     double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
-    if (T->pa != a) {
+    if (T->pa == a && !(l1 < l0)) {
+        /* X at a corner of the cutting piece: the piece on the other side of
+        ** the corner may be the one that sweeps on towards v' (B) */
+        uint32_t c = facing_piece(W, T, a, lam, t);
+        if (c != WK_NONE) {
+            unlink_f(A, sj);
+            link_f(A, W, sj, c);
+            T = &A->s[sj];
+            l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
+        }
+    }
+    if (T->pa != a && T->pa != WK_NONE && l1 < l0) {
+        T->xf = next_down(T, at, via);
+    } else if (T->pa != a) {
         /* a recursive cut moved F' on already (defensive: F' is at X, so
         ** none should) */
     } else if (!(l1 < l0) && T->ghost) {
