@@ -527,7 +527,7 @@ static wk_status new_segment(mc_state *A, uint32_t v, wk_point o, wk_point u, do
     S->pa = S->pb = S->next_on = S->prev_on = S->probe = WK_NONE;
     S->ba = S->bb = S->next_b = S->prev_b = WK_NONE;
     S->xf = S->xv = NO_CROSS;
-    A->seg_of[v] = si;
+    if (v != WK_NONE) A->seg_of[v] = si;
     *out = si;
     return WK_OK;
 }
@@ -1043,6 +1043,7 @@ static double mc_next_time(void *ud) {
 }
 
 static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t);
+static bool guards_ahead(const mc_state *A, const wk_wavefront *W, uint32_t si, double lam);
 
 /* Of the pieces just before and after piece a, one that crosses trace T
 ** within WK_MC_STEINER_SLACK * eps_d of lam at time t and whose crossing
@@ -1061,14 +1062,61 @@ static uint32_t facing_piece(const wk_wavefront *W, const mc_seg *T, uint32_t a,
     return WK_NONE;
 }
 
+/* Trace sj is cut at lam by a reflex vertex crossing it there; b is that
+** vertex's other piece, which sweeps the part of sj beyond the crossing on,
+** away from v'.  That part still guards traces waiting on it: it becomes a
+** ghost of its own with B on b and sj's F, and takes the crossings beyond
+** lam along (the waiting traces' entries are pointed at it). */
+static wk_status spawn_far(mc_state *A, wk_wavefront *W, uint32_t sj, double lam, uint32_t b) {
+    double slack = WK_MC_STEINER_SLACK * wk_wf_eps_d(W), t = wk_wf_now(W);
+    uint32_t g;
+    if (new_segment(A, WK_NONE, A->s[sj].o, A->s[sj].u, A->s[sj].len, &g) != WK_OK)
+        return A->R->err.code;
+    wk_count(A->R, WK_VC_ghost_traces, 1);
+    mc_seg *T = &A->s[sj], *G = &A->s[g];
+    G->ghost = true;
+    link_b(A, W, g, b);
+    if (T->beyond) G->beyond = true;
+    else if (T->pa != WK_NONE) link_f(A, W, g, T->pa);
+    uint32_t keep = 0;
+    for (uint32_t k = 0; k < A->s[sj].nx; k++) {
+        mc_cross c = A->s[sj].x[k];
+        if (c.lam <= lam + slack) {
+            A->s[sj].x[keep++] = c;
+            continue;
+        }
+        if (add_cross(A, g, c.lam, c.other) != WK_OK) return A->R->err.code;
+        if (c.other >= A->n_s) continue;
+        mc_seg *O = &A->s[c.other];
+        wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
+        double lo = lambda_of(O, X);
+        for (uint32_t m = 0; m < O->nx; m++)
+            if (O->x[m].other == sj && fabs(O->x[m].lam - lo) <= slack) O->x[m].other = g;
+        if (O->xv.other == sj && fabs(O->xv.lam - lo) <= slack) O->xv.other = g;
+        if (O->xf.other == sj && fabs(O->xf.lam - lo) <= slack) O->xf.other = g;
+    }
+    A->s[sj].nx = keep;
+    G = &A->s[g];
+    double lf = lambda_f(W, G, t);
+    G->xf = G->pa != WK_NONE && isfinite(lf) ? next_down(G, lf, WK_NONE) : NO_CROSS;
+    G->xv = next_up(G, lam, WK_NONE);
+    return schedule_seg(A, W, g);
+}
+
 /* Cut s' at lam (a crossing X): F' := X on piece a. */
-static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via) {
+static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via,
+                     uint32_t far) {
     mc_seg *T = &A->s[sj];
     DBG("  cut seg %u (v %u) at %.9g by piece %u via %u\n", sj, T->v, lam, a, via);
     double t = wk_wf_now(W);
-    /* the part of s' beyond X is no longer reached from v': its guards go */
-    if (release_guards(A, W, sj, lam + WK_RELOCATE_SLACK * wk_wf_eps_d(W)) != WK_OK)
+    /* The part of s' beyond X is no longer reached from v': if a piece
+    ** sweeps it on (far) and it guards traces, it lives on as a ghost; else
+    ** its guards go. */
+    if (far != WK_NONE && guards_ahead(A, W, sj, lam + WK_RELOCATE_SLACK * wk_wf_eps_d(W))) {
+        if (spawn_far(A, W, sj, lam, far) != WK_OK) return A->R->err.code;
+    } else if (release_guards(A, W, sj, lam + WK_RELOCATE_SLACK * wk_wf_eps_d(W)) != WK_OK) {
         return A->R->err.code;
+    }
     T = &A->s[sj];
     unlink_f(A, sj);
     link_f(A, W, sj, a);
@@ -1090,7 +1138,8 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         const mc_seg *O = &A->s[c.other];
         wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
         double lo = lambda_of(O, X);
-        if (unswept(W, O, lo, t) && cut(A, W, c.other, a, lo, sj) != WK_OK) return A->R->err.code;
+        if (unswept(W, O, lo, t) && cut(A, W, c.other, a, lo, sj, WK_NONE) != WK_OK)
+            return A->R->err.code;
     }
     T = &A->s[sj];
     double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
@@ -1110,6 +1159,11 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     } else if (T->pa != a) {
         /* a recursive cut moved F' on already (defensive: F' is at X, so
         ** none should) */
+    } else if (T->ghost && fabs(lam - lambda_lo(W, T, t)) <= slack) {
+        /* B is at X too: the ghost's unswept part is gone (the traces
+        ** through X were cut above) */
+        drop(A, sj);
+        return flush_extensions(A, W, t);
     } else if (!(l1 < l0) && T->ghost) {
         /* a ghost's F facing away: nothing to follow without a shot */
         if (kill_ghost(A, W, sj, t) != WK_OK) return A->R->err.code;
@@ -1242,7 +1296,7 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
         wk_point X = {S->o.x + x.lam * S->u.x, S->o.y + x.lam * S->u.y};
         double lx = lambda_of(T, X);
         if (unswept(W, T, lx, t)) {
-            uint32_t pick = WK_NONE;
+            uint32_t pick = WK_NONE, far = WK_NONE;
             if (kind == MC_START) {
                 pick = S->pa;
             } else if (S->ghost) {
@@ -1251,17 +1305,21 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
                 /* which of v's pieces faces v': the one whose crossing with
                 ** s' moves towards v' */
                 uint32_t v = S->v, cand[2] = {wk_wf_prev(W, v), v};
-                double best = INFINITY;
+                double best = INFINITY, rate[2] = {NAN, NAN};
                 for (int c = 0; c < 2; c++) {
                     const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, cand[c]));
                     double l1 = lambda_on_line(T, L, t + 1), l0 = lambda_on_line(T, L, t);
+                    rate[c] = l1 - l0;
                     if (isfinite(l0) && isfinite(l1) && l1 - l0 < best) {
                         best = l1 - l0;
                         pick = cand[c];
                     }
                 }
+                /* v's other piece sweeps the part of s' beyond X on */
+                uint32_t other = pick == cand[0] ? 1 : 0;
+                if (pick != WK_NONE && rate[other] > 0) far = cand[other];
             }
-            if (pick != WK_NONE && cut(A, W, sj, pick, lx, si) != WK_OK) return R->err.code;
+            if (pick != WK_NONE && cut(A, W, sj, pick, lx, si, far) != WK_OK) return R->err.code;
         }
     }
     S = &A->s[si];
