@@ -7,8 +7,9 @@ weights, several seeds: bin/wskel --variant motorcycle --check must pass and
 give naive's skeleton (testlib.same_skeleton).  Small cases run with
 --check-invariants too (the finder's and the wavefront's invariants after
 every group).  The variant takes equal weights only: a weighted polygon is
-refused with exit 2 and a message naming the edge, never answered.  A sweep
-that compared nothing fails (the minimum is asserted).
+refused with exit 2 and a message naming the edge, never answered.  An input
+the variant hands to the reference (reference_fallbacks) is counted as not
+compared.  A sweep that compared too little fails (the minimum is asserted).
 """
 
 import os
@@ -56,7 +57,12 @@ class Motorcycle(unittest.TestCase):
         if rc != 0:
             t.case(["%s: motorcycle exit %s: %s" % (name, rc, err.strip()[:200])], path)
             return
-        ok, why = tl.same_skeleton(tl.json.loads(out_n), tl.json.loads(out))
+        got = tl.json.loads(out)
+        if int((got.get("stats") or {}).get("reference_fallbacks", 0) or 0):
+            # the trace finder gave up and naive answered: naive vs naive
+            t.skip(name, "handed to the reference variant (not compared)")
+            return
+        ok, why = tl.same_skeleton(tl.json.loads(out_n), got)
         t.case([] if ok else ["%s: differs from naive: %s" % (name, why[:200])], path)
 
     def test_families(self):
@@ -71,7 +77,7 @@ class Motorcycle(unittest.TestCase):
                         continue
                     self.compare(t, "%s n=%d seed %d" % (fam, n, seed), path,
                                  n <= INVARIANTS_MAX_N)
-        t.report(self)
+        t.report(self, list_skipped=["handed to the reference variant (not compared)"])
         self.assertGreaterEqual(t.cases, len(NS) * SEEDS * 8, t.summary())
 
     def test_convex_with_holes(self):

@@ -1359,6 +1359,8 @@ static const wk_split_finder motorcycle_finder = {
     .local_refresh = true,
 };
 
+static void mc_clear(mc_state *Ap);
+
 static wk_status motorcycle_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
     for (uint32_t i = 1; i < P->n; i++)
         if (P->w[i] != P->w[0])
@@ -1367,11 +1369,37 @@ static wk_status motorcycle_run(wk_run *R, const wk_polygon *P, wk_skeleton **ou
                            "%g, edge %u %g): the motorcycle graph of P does not cover the reflex arcs "
                            "of a weighted skeleton (README); use --variant naive or arrangement",
                            wk_polygon_input_edge(P, i), P->w[i], wk_polygon_input_edge(P, 0), P->w[0]);
+    *out = NULL;
     mc_state A;
     memset(&A, 0, sizeof A);
     A.R = R;
     wk_event_queue_init(&A.Q);
     wk_status st = wk_wavefront_run(R, P, &motorcycle_finder, &A, out);
+    mc_clear(&A);
+    /* The trace finder's own check: the skeleton must pass the validator.
+    ** When the finder gave up (WK_EALGO) or its skeleton fails, the input
+    ** goes to the reference variant (its registry entry): a right skeleton
+    ** at the reference's cost, never a wrong one.  reference_fallbacks
+    ** counts it; tests count such inputs as not compared. */
+    if (st == WK_OK && (st = wk_validate(R, P, *out, 0, NULL)) != WK_OK) {
+        wk_skeleton_free(R, *out);
+        *out = NULL;
+    }
+    if (st != WK_EALGO && st != WK_EINVALID) return st;
+    wk_run_clear_error(R);
+    wk_event ev = {0, 0, 0, WK_NONE, WK_NONE, WK_NONE};
+    wk_notify_event(R, WK_VC_reference_fallbacks, &ev);
+    if ((st = wk_variant_reference()->run(R, P, out)) != WK_OK) return st;
+    if ((st = wk_validate(R, P, *out, 0, NULL)) != WK_OK) {
+        wk_skeleton_free(R, *out);
+        *out = NULL;
+    }
+    return st;
+}
+
+static void mc_clear(mc_state *Ap) {
+    mc_state A = *Ap;
+    wk_run *R = A.R;
     wk_event_queue_clear(R, &A.Q);
     for (uint32_t si = 0; si < A.n_s; si++)
         if (A.s[si].capx) WK_FREE_ARRAY(R, A.s[si].x, A.s[si].capx);
@@ -1386,7 +1414,6 @@ static wk_status motorcycle_run(wk_run *R, const wk_polygon *P, wk_skeleton **ou
         WK_FREE_ARRAY(R, A.fhead, A.cap_v);
         WK_FREE_ARRAY(R, A.bhead, A.cap_v);
     }
-    return st;
 }
 
 static const wk_counter_def mc_counters[] = WK_VARIANT_COUNTER_TABLE(MC_COUNTER_LIST);

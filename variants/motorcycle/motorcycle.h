@@ -20,7 +20,8 @@
     X(late_traces, "traces shot for reflex vertices that are not vertices of P")               \
     X(trace_extensions, "traces extended because the trace they crashed into ended early")      \
     X(ghost_traces, "traces that outlived their vertex to guard the traces ending on them")    \
-    X(ray_shots, "rays shot against the wavefront (O(cycle) each)")
+    X(ray_shots, "rays shot against the wavefront (O(cycle) each)")                           \
+    X(reference_fallbacks, "inputs handed to the reference variant (the trace finder failed)")
 
 WK_VARIANT_COUNTER_ENUM(MC_COUNTER_LIST)
 
