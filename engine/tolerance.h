@@ -141,6 +141,28 @@
 ** not crossings). */
 #define WK_ARR_PARALLEL 1e-12
 
+/* The graph of reflex-vertex traces of 002, section 2 (traces that stop at
+** the walls or at earlier traces).  Two trace directions are parallel below
+** this |cross|: then only collinear traces (within eps_d) meet, head-on or
+** one behind the other.  The bar of WK_ARR_PARALLEL, for the same reason:
+** above it the crossing's position along the lines (rounding ~1e-16 *
+** scale / |cross|) stays far below the polygon's size. */
+#define WK_MCG_PARALLEL_SIN 1e-12
+/* Its candidate grid lists a trace in every cell within this many eps_d of
+** the trace's bounding segment (origin to wall hit).  Crossings count up to
+** eps_d beyond a segment's ends, and a computed crossing lies within
+** rounding (far below eps_d) of both lines, so 2 eps_d would cover them;
+** 4 also keeps every listing at least 3 eps_d (along the trace) ahead of
+** any crash that the listed cell can matter for, so a trace is always
+** listed before it can stop there. */
+#define WK_MCG_GRID_DELTA 4.0
+/* The consistency check of that graph (tests, debug) accepts a stop point
+** within this many eps_d (per member of a simultaneous group, whose members
+** join pairwise within eps_d) of the wall or trace it stops at, and times
+** within as many eps_t: crossing points are constructed (a few ulps) and
+** the pairwise joins of a group can chain. */
+#define WK_MCG_CHECK_SLACK 16.0
+
 /* ------------------------------- rays against a moving wavefront (finders) */
 
 /* A static ray hits a wavefront piece when its parameter along the piece

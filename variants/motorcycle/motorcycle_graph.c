@@ -1,0 +1,1009 @@
+/*
+** motorcycle_graph.c: M(P) of 002, section 2, by a time-ordered simulation
+** over a uniform grid, and its brute-force twin.  Model, crash rules,
+** tolerances and the algorithm are in motorcycle_graph.h.
+**
+** Invariants between events (the simulation state `sim`):
+**   - crashed[i] == 0: m[i].len == m[i].wall_len and m[i].kind is unset;
+**     crashed[i] == 1: m[i].len, kind, other / other_len or grp[i] are the
+**     final crash record, except that a TRACE crash may still become
+**     SIMULTANEOUS (joined by a motorcycle arriving at the same time);
+**   - grp[i] != WK_NONE iff i is SIMULTANEOUS; then i is on the member list
+**     of that group (head / next_member), and the group is alive; a merged
+**     group is dead and has no members;
+**   - grid only: every motorcycle that is alive at the heap's current key
+**     has listed itself in all cells of the slabs before its cursor
+**     slab[i], and its next registration (slab[i]) is queued, unless its
+**     slabs are exhausted.
+** The heap holds events keyed (t, kind, a, b): a registration of a at t
+** (b == WK_NONE, before any crossing at the same t) or the crossing of the
+** pair a < b at t = max of the two arrival times; one key per event, so
+** the pop order is a total order independent of the push order.
+*/
+#include "motorcycle_graph.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ray_shoot.h"
+
+/* Grid size: about this many cells per motorcycle.  Not a tolerance: a
+** cost trade-off (fewer cells, more pairs tested per listing; more
+** cells, more listings per trace).  1 keeps both O(1) per cell crossed for
+** traces spread over the polygon. */
+#define MCG_CELLS_PER_MOTORCYCLE 1.0
+
+/* ================================================================ events */
+
+typedef struct mev {
+    double t;   /* when */
+    uint32_t a; /* registration: the motorcycle; crossing: the smaller id */
+    uint32_t b; /* crossing: the larger id; WK_NONE for a registration */
+} mev;
+
+/* Total order on keys: time, registrations before crossings, ids. */
+static inline bool ev_less(const mev *x, const mev *y) {
+    if (x->t != y->t) return x->t < y->t;
+    bool rx = x->b == WK_NONE, ry = y->b == WK_NONE;
+    if (rx != ry) return rx;
+    if (x->a != y->a) return x->a < y->a;
+    return x->b < y->b;
+}
+
+typedef struct heap {
+    mev *e;
+    uint32_t size, cap;
+} heap;
+
+static wk_status heap_push(wk_run *R, heap *H, mev v) {
+    if (H->size == UINT32_MAX - 1) return WK_FAIL(R, WK_ENOMEM, NULL, 0, "too many events");
+    if (WK_GROW(R, H->e, H->cap, H->size + 1) != WK_OK) return WK_ENOMEM;
+    uint32_t i = H->size++;
+    while (i > 0) {
+        uint32_t p = (i - 1) / 2;
+        if (!ev_less(&v, &H->e[p])) break;
+        H->e[i] = H->e[p];
+        i = p;
+    }
+    H->e[i] = v;
+    return WK_OK;
+}
+
+static mev heap_pop(heap *H) {
+    mev top = H->e[0], v = H->e[--H->size];
+    uint32_t i = 0, n = H->size;
+    for (;;) {
+        uint32_t c = 2 * i + 1;
+        if (c >= n) break;
+        if (c + 1 < n && ev_less(&H->e[c + 1], &H->e[c])) c++;
+        if (!ev_less(&H->e[c], &v)) break;
+        H->e[i] = H->e[c];
+        i = c;
+    }
+    if (n > 0) H->e[i] = v;
+    return top;
+}
+
+/* ============================================================ the state */
+
+typedef struct sim_group {
+    wk_point p;
+    double t;
+    uint32_t head, tail, count; /* member list through next_member */
+    bool alive;                 /* false once merged into another */
+    uint32_t on_other;
+    double on_len;
+    uint32_t on_edge, on_vertex;
+} sim_group;
+
+typedef struct cell_entry {
+    uint32_t id, next;
+} cell_entry;
+
+typedef struct sim {
+    wk_run *R;
+    wk_motorcycle *m;
+    uint32_t r;
+    double eps_d, eps_t;
+    uint8_t *crashed;      /* r */
+    uint32_t *grp;         /* r: group or WK_NONE */
+    uint32_t *next_member; /* r */
+    sim_group *groups;
+    uint32_t n_groups, cap_groups;
+    heap H;
+    uint64_t pairs;
+    /* grid only */
+    bool grid;
+    double g0[2], cw[2], delta;
+    uint32_t nc[2];        /* columns, rows */
+    uint32_t *head;        /* nc[0] * nc[1]: first entry or WK_NONE */
+    cell_entry *pool;
+    uint32_t n_pool, cap_pool;
+    uint32_t *slab;        /* r: next slab along the major axis */
+    uint32_t *slab_end;    /* r: last slab (inclusive) */
+} sim;
+
+static inline double tau(const wk_motorcycle *m, double d) { return wk_motorcycle_time_at(m, d); }
+
+/* ======================================================= the candidates */
+
+/* Where motorcycles i < j meet (see the header's candidates): distances
+** *di, *dj clamped to [0, wall_len], the point *x.  A function of (i, j)
+** and the motorcycles' start data alone. */
+static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, wk_point *x) {
+    const wk_motorcycle *a = &S->m[i], *b = &S->m[j];
+    double eps = S->eps_d;
+    double dx = b->o.x - a->o.x, dy = b->o.y - a->o.y;
+    double cr = a->u.x * b->u.y - a->u.y * b->u.x;
+    double s, t;
+    if (fabs(cr) > WK_MCG_PARALLEL_SIN) {
+        s = (dx * b->u.y - dy * b->u.x) / cr;
+        t = (dx * a->u.y - dy * a->u.x) / cr;
+        if (!(s >= -eps && s <= a->wall_len + eps && t >= -eps && t <= b->wall_len + eps))
+            return false;
+        *x = (wk_point){a->o.x + s * a->u.x, a->o.y + s * a->u.y};
+    } else {
+        double h = a->u.x * dy - a->u.y * dx; /* b's origin off a's line */
+        if (fabs(h) > eps) return false;
+        double p = a->u.x * dx + a->u.y * dy; /* ... and along it */
+        if (a->u.x * b->u.x + a->u.y * b->u.y > 0) {
+            /* Same sense: the one behind reaches the front one's origin,
+            ** which the front one left at time 0. */
+            if (p >= 0) {
+                s = p;
+                t = 0;
+                *x = b->o;
+            } else {
+                s = 0;
+                t = -p;
+                *x = a->o;
+            }
+        } else {
+            if (p <= 0) return false; /* moving apart */
+            /* Head-on: the point both reach at the same time. */
+            bool ia = a->speed == INFINITY, ib = b->speed == INFINITY;
+            s = ia && ib ? 0.5 * p : ia ? p : ib ? 0.0 : p * (a->speed / (a->speed + b->speed));
+            t = p - s;
+            *x = (wk_point){a->o.x + s * a->u.x, a->o.y + s * a->u.y};
+        }
+        if (!(s <= a->wall_len + eps && t <= b->wall_len + eps)) return false;
+    }
+    *di = s < 0 ? 0 : s > a->wall_len ? a->wall_len : s;
+    *dj = t < 0 ? 0 : t > b->wall_len ? b->wall_len : t;
+    return true;
+}
+
+static inline double event_time(const sim *S, uint32_t i, uint32_t j, double di, double dj) {
+    double ti = tau(&S->m[i], di), tj = tau(&S->m[j], dj);
+    return ti > tj ? ti : tj;
+}
+
+/* ============================================================== crashes */
+
+static void crash_trace(sim *S, uint32_t l, double dl, uint32_t w, double dw) {
+    wk_motorcycle *m = &S->m[l];
+    S->crashed[l] = 1;
+    m->len = dl;
+    m->kind = WK_MCG_TRACE;
+    m->other = w;
+    m->other_len = dw;
+}
+
+static wk_status new_group(sim *S, wk_point x, double t, uint32_t *g) {
+    if (WK_GROW(S->R, S->groups, S->cap_groups, S->n_groups + 1) != WK_OK) return WK_ENOMEM;
+    *g = S->n_groups++;
+    S->groups[*g] = (sim_group){x, t, WK_NONE, WK_NONE, 0, true, WK_NONE, 0.0, WK_NONE, WK_NONE};
+    return WK_OK;
+}
+
+static void link_member(sim *S, uint32_t g, uint32_t i) {
+    sim_group *G = &S->groups[g];
+    S->grp[i] = g;
+    S->next_member[i] = WK_NONE;
+    if (G->tail == WK_NONE)
+        G->head = i;
+    else
+        S->next_member[G->tail] = i;
+    G->tail = i;
+    G->count++;
+}
+
+/* i (alive, or crashed at the group's point) becomes a member of g, and
+** brings the trace it had crashed into (when it had) and its wall (when
+** its point is its wall point) to the group. */
+static void join(sim *S, uint32_t g, uint32_t i, double d) {
+    wk_motorcycle *m = &S->m[i];
+    sim_group *G = &S->groups[g];
+    if (!S->crashed[i]) {
+        S->crashed[i] = 1;
+        m->len = d;
+    } else if (m->kind == WK_MCG_TRACE && G->on_other == WK_NONE) {
+        G->on_other = m->other;
+        G->on_len = m->other_len;
+    }
+    if (m->len >= m->wall_len - S->eps_d && G->on_edge == WK_NONE && G->on_vertex == WK_NONE) {
+        G->on_edge = m->wall_edge;
+        G->on_vertex = m->wall_vertex;
+    }
+    m->kind = WK_MCG_SIMULTANEOUS;
+    m->other = WK_NONE;
+    m->other_len = 0.0;
+    link_member(S, g, i);
+}
+
+/* Merge the younger of groups g, h into the older. */
+static void merge(sim *S, uint32_t g, uint32_t h) {
+    if (h < g) {
+        uint32_t k = g;
+        g = h;
+        h = k;
+    }
+    sim_group *A = &S->groups[g], *B = &S->groups[h];
+    for (uint32_t i = B->head; i != WK_NONE;) {
+        uint32_t nx = S->next_member[i];
+        link_member(S, g, i);
+        i = nx;
+    }
+    if (A->on_other == WK_NONE) {
+        A->on_other = B->on_other;
+        A->on_len = B->on_len;
+    }
+    if (A->on_edge == WK_NONE && A->on_vertex == WK_NONE) {
+        A->on_edge = B->on_edge;
+        A->on_vertex = B->on_vertex;
+    }
+    B->alive = false;
+    B->head = B->tail = WK_NONE;
+    B->count = 0;
+}
+
+enum { ST_ALIVE, ST_AT, ST_BEFORE, ST_BEYOND };
+
+static int state_at(const sim *S, uint32_t i, double d) {
+    if (!S->crashed[i]) return ST_ALIVE;
+    double len = S->m[i].len;
+    if (len < d - S->eps_d) return ST_BEFORE;
+    if (len > d + S->eps_d) return ST_BEYOND;
+    return ST_AT;
+}
+
+/* l crashes into w's trace at the crossing, unless it is l's wall point
+** (the WALL crash wins there). */
+static void loser(sim *S, uint32_t l, double dl, uint32_t w, double dw) {
+    if (dl >= S->m[l].wall_len - S->eps_d) return;
+    crash_trace(S, l, dl, w, dw);
+}
+
+/* The crossing event of i < j (the rules of the header). */
+static wk_status process_crossing(sim *S, uint32_t i, uint32_t j) {
+    double di, dj;
+    wk_point x;
+    if (!meet(S, i, j, &di, &dj, &x)) return WK_OK; /* defensive: pushed only if they meet */
+    double ti = tau(&S->m[i], di), tj = tau(&S->m[j], dj);
+    if (fabs(ti - tj) > S->eps_t) {
+        uint32_t w = ti < tj ? i : j, l = ti < tj ? j : i;
+        double dw = ti < tj ? di : dj, dl = ti < tj ? dj : di;
+        if (S->crashed[l]) return WK_OK;
+        if (state_at(S, w, dw) == ST_BEFORE) return WK_OK;
+        loser(S, l, dl, w, dw);
+        return WK_OK;
+    }
+    int si = state_at(S, i, di), sj = state_at(S, j, dj);
+    if (si == ST_BEFORE || sj == ST_BEFORE) return WK_OK;
+    if (si == ST_BEYOND || sj == ST_BEYOND) {
+        if (si == ST_BEYOND && sj == ST_ALIVE) loser(S, j, dj, i, di);
+        if (sj == ST_BEYOND && si == ST_ALIVE) loser(S, i, di, j, dj);
+        return WK_OK;
+    }
+    double T = ti > tj ? ti : tj;
+    uint32_t gi = S->grp[i], gj = S->grp[j], g;
+    if (si == ST_ALIVE && sj == ST_ALIVE) {
+        if (new_group(S, x, T, &g) != WK_OK) return WK_ENOMEM;
+        join(S, g, i, di);
+        join(S, g, j, dj);
+    } else if (si == ST_AT && sj == ST_AT) {
+        if (gi == WK_NONE && gj == WK_NONE) {
+            if (new_group(S, x, T, &g) != WK_OK) return WK_ENOMEM;
+            join(S, g, i, di);
+            join(S, g, j, dj);
+        } else if (gi == WK_NONE) {
+            join(S, gj, i, di);
+        } else if (gj == WK_NONE) {
+            join(S, gi, j, dj);
+        } else if (gi != gj) {
+            merge(S, gi, gj);
+        }
+    } else {
+        /* One alive, one at x. */
+        uint32_t at = si == ST_AT ? i : j, al = si == ST_AT ? j : i;
+        double dat = si == ST_AT ? di : dj, dal = si == ST_AT ? dj : di;
+        g = S->grp[at];
+        if (g == WK_NONE) {
+            if (new_group(S, x, T, &g) != WK_OK) return WK_ENOMEM;
+            join(S, g, at, dat);
+        }
+        join(S, g, al, dal);
+    }
+    return WK_OK;
+}
+
+/* ================================================================= grid */
+
+static inline uint32_t grid_index(const sim *S, int k, double v) {
+    double f = (v - S->g0[k]) / S->cw[k];
+    if (!(f >= 0.0)) return 0;
+    if (f >= (double)S->nc[k]) return S->nc[k] - 1;
+    return (uint32_t)f;
+}
+
+static inline uint32_t cell_of(const sim *S, wk_point p) {
+    return grid_index(S, 1, p.y) * S->nc[0] + grid_index(S, 0, p.x);
+}
+
+static inline int major_axis(const wk_motorcycle *m) { return fabs(m->u.x) >= fabs(m->u.y) ? 0 : 1; }
+
+/* The distance range [*d0, *d1] of motorcycle i's bounding segment inside
+** slab s (of its major axis k) widened by delta; the outer slabs reach to
+** infinity. */
+static void slab_range(const sim *S, uint32_t i, uint32_t s, double *d0, double *d1) {
+    const wk_motorcycle *m = &S->m[i];
+    int k = major_axis(m);
+    double o = k == 0 ? m->o.x : m->o.y, u = k == 0 ? m->u.x : m->u.y;
+    double lo = s == 0 ? -INFINITY : S->g0[k] + (double)s * S->cw[k] - S->delta;
+    double hi = s + 1 == S->nc[k] ? INFINITY : S->g0[k] + (double)(s + 1) * S->cw[k] + S->delta;
+    double a = (lo - o) / u, b = (hi - o) / u;
+    double lo_d = a < b ? a : b, hi_d = a < b ? b : a;
+    *d0 = lo_d > 0 ? lo_d : 0;
+    *d1 = hi_d < m->wall_len ? hi_d : m->wall_len;
+    if (*d1 < *d0) *d1 = *d0;
+}
+
+static wk_status push_registration(sim *S, uint32_t i) {
+    double d0, d1;
+    slab_range(S, i, S->slab[i], &d0, &d1);
+    return heap_push(S->R, &S->H, (mev){tau(&S->m[i], d0), i, WK_NONE});
+}
+
+/* Motorcycle i lists itself in the cells of its current slab, testing the
+** motorcycles already listed there, then queues its next slab. */
+static wk_status process_registration(sim *S, uint32_t i) {
+    if (S->crashed[i]) return WK_OK;
+    const wk_motorcycle *m = &S->m[i];
+    int k = major_axis(m), q = 1 - k;
+    uint32_t s = S->slab[i];
+    double d0, d1;
+    slab_range(S, i, s, &d0, &d1);
+    double oq = q == 0 ? m->o.x : m->o.y, uq = q == 0 ? m->u.x : m->u.y;
+    double p0 = oq + d0 * uq, p1 = oq + d1 * uq;
+    uint32_t c0 = grid_index(S, q, (p0 < p1 ? p0 : p1) - S->delta);
+    uint32_t c1 = grid_index(S, q, (p0 < p1 ? p1 : p0) + S->delta);
+    for (uint32_t c = c0; c <= c1; c++) {
+        uint32_t cell = k == 0 ? c * S->nc[0] + s : s * S->nc[0] + c;
+        for (uint32_t e = S->head[cell]; e != WK_NONE; e = S->pool[e].next) {
+            uint32_t j = S->pool[e].id, a = i < j ? i : j, b = i < j ? j : i;
+            double da, db;
+            wk_point x;
+            S->pairs++;
+            if (!meet(S, a, b, &da, &db, &x) || cell_of(S, x) != cell) continue;
+            if (heap_push(S->R, &S->H, (mev){event_time(S, a, b, da, db), a, b}) != WK_OK)
+                return WK_ENOMEM;
+        }
+        if (S->n_pool == UINT32_MAX - 1)
+            return WK_FAIL(S->R, WK_ENOMEM, NULL, 0, "too many grid entries");
+        if (WK_GROW(S->R, S->pool, S->cap_pool, S->n_pool + 1) != WK_OK) return WK_ENOMEM;
+        S->pool[S->n_pool] = (cell_entry){i, S->head[cell]};
+        S->head[cell] = S->n_pool++;
+    }
+    if (s == S->slab_end[i]) return WK_OK;
+    int u_sign = (k == 0 ? m->u.x : m->u.y) > 0 ? 1 : -1;
+    S->slab[i] = u_sign > 0 ? s + 1 : s - 1;
+    return push_registration(S, i);
+}
+
+/* The grid over the box [lo, hi] (relative coordinates, containing every
+** bounding segment), the cursors, and every motorcycle's first
+** registration. */
+static wk_status grid_start(sim *S, wk_point lo, wk_point hi) {
+    double d = S->delta;
+    double W = hi.x - lo.x + 2.0 * d, H = hi.y - lo.y + 2.0 * d;
+    double target = MCG_CELLS_PER_MOTORCYCLE * (double)S->r;
+    if (target < 1.0) target = 1.0;
+    double cell = sqrt(W * H / target);
+    double fx = ceil(W / cell), fy = ceil(H / cell);
+    S->nc[0] = !(fx >= 1.0) ? 1u : fx >= target ? (uint32_t)target : (uint32_t)fx;
+    S->nc[1] = !(fy >= 1.0) ? 1u : fy >= target ? (uint32_t)target : (uint32_t)fy;
+    if ((uint64_t)S->nc[0] * S->nc[1] >= UINT32_MAX / 2)
+        return WK_FAIL(S->R, WK_ENOMEM, NULL, 0, "grid of %u x %u cells too large", S->nc[0],
+                       S->nc[1]);
+    S->g0[0] = lo.x - d;
+    S->g0[1] = lo.y - d;
+    S->cw[0] = W / S->nc[0];
+    S->cw[1] = H / S->nc[1];
+    uint32_t cells = S->nc[0] * S->nc[1];
+    S->head = WK_NEW_ARRAY(S->R, uint32_t, cells);
+    S->slab = WK_NEW_ARRAY(S->R, uint32_t, S->r);
+    S->slab_end = WK_NEW_ARRAY(S->R, uint32_t, S->r);
+    if (!S->head || !S->slab || !S->slab_end) return WK_ENOMEM;
+    for (uint32_t c = 0; c < cells; c++) S->head[c] = WK_NONE;
+    for (uint32_t i = 0; i < S->r; i++) {
+        const wk_motorcycle *m = &S->m[i];
+        int k = major_axis(m);
+        double o = k == 0 ? m->o.x : m->o.y, u = k == 0 ? m->u.x : m->u.y;
+        double e = o + m->wall_len * u, sg = u > 0 ? 1.0 : -1.0;
+        S->slab[i] = grid_index(S, k, o - sg * d);
+        S->slab_end[i] = grid_index(S, k, e + sg * d);
+        if (push_registration(S, i) != WK_OK) return WK_ENOMEM;
+    }
+    return WK_OK;
+}
+
+/* All pairs' events up front. */
+static wk_status brute_start(sim *S) {
+    for (uint32_t i = 0; i < S->r; i++)
+        for (uint32_t j = i + 1; j < S->r; j++) {
+            double di, dj;
+            wk_point x;
+            S->pairs++;
+            if (!meet(S, i, j, &di, &dj, &x)) continue;
+            if (heap_push(S->R, &S->H, (mev){event_time(S, i, j, di, dj), i, j}) != WK_OK)
+                return WK_ENOMEM;
+        }
+    return WK_OK;
+}
+
+static wk_status run_events(sim *S) {
+    while (S->H.size > 0) {
+        mev e = heap_pop(&S->H);
+        wk_status st =
+            e.b == WK_NONE ? process_registration(S, e.a) : process_crossing(S, e.a, e.b);
+        if (st != WK_OK) return st;
+    }
+    return WK_OK;
+}
+
+static void sim_clear(sim *S) {
+    wk_run *R = S->R;
+    WK_FREE_ARRAY(R, S->crashed, S->r);
+    WK_FREE_ARRAY(R, S->grp, S->r);
+    WK_FREE_ARRAY(R, S->next_member, S->r);
+    WK_FREE_ARRAY(R, S->groups, S->cap_groups);
+    WK_FREE_ARRAY(R, S->H.e, S->H.cap);
+    WK_FREE_ARRAY(R, S->head, (size_t)S->nc[0] * S->nc[1]);
+    WK_FREE_ARRAY(R, S->pool, S->cap_pool);
+    WK_FREE_ARRAY(R, S->slab, S->r);
+    WK_FREE_ARRAY(R, S->slab_end, S->r);
+}
+
+/* ============================================================ the rays */
+
+/* Direction and speed of reflex vertex v (coordinates relative to c). */
+static void motion(const wk_polygon *P, uint32_t v, wk_point c, wk_motorcycle *m) {
+    wk_offset_line la, lb;
+    wk_offset_line_of_edge_at(P, wk_polygon_prev(P, v), c, &la);
+    wk_offset_line_of_edge_at(P, v, c, &lb);
+    wk_point vel;
+    wk_velocity_kind kind = wk_vertex_velocity(&la, &lb, &vel);
+    double dx, dy, speed = hypot(vel.x, vel.y);
+    if (kind == WK_VEL_ANTIPARALLEL) {
+        /* A zero-width spike: the vertex runs back along it. */
+        dx = la.ux - lb.ux;
+        dy = la.uy - lb.uy;
+        speed = INFINITY;
+    } else if (kind == WK_VEL_REGULAR) {
+        dx = vel.x;
+        dy = vel.y;
+    } else {
+        /* Straight or collinear below the parallel bar yet reflex by the
+        ** exact test: along the mean normal, unbounded speed. */
+        dx = la.nx + lb.nx;
+        dy = la.ny + lb.ny;
+        speed = INFINITY;
+    }
+    double len = hypot(dx, dy);
+    m->u = (wk_point){dx / len, dy / len};
+    m->speed = speed;
+}
+
+/* A ray that meets nothing starts within tol of an edge other than its own
+** two (a tiny edge next to its vertex): the shooter ignores hits at t <= 0.
+** Its first boundary point is then its origin up to tol: the nearest
+** endpoint w of the closest such edge, at max(0, projection of w).  False
+** if no edge is that close. */
+static bool hit_at_origin(const wk_polygon *Q, double tol, uint32_t v, wk_point u, wk_ray_hit *h) {
+    uint32_t prev = wk_polygon_prev(Q, v);
+    wk_point a = Q->p[v];
+    double best = INFINITY;
+    uint32_t bw = WK_NONE;
+    for (uint32_t e = 0; e < Q->n; e++) {
+        if (e == v || e == prev) continue;
+        uint32_t f = wk_polygon_next(Q, e);
+        wk_point p = Q->p[e], q = Q->p[f];
+        double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
+        double t = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        double d = hypot(p.x + t * dx - a.x, p.y + t * dy - a.y);
+        if (d <= tol && d < best) {
+            best = d;
+            bw = hypot(p.x - a.x, p.y - a.y) <= hypot(q.x - a.x, q.y - a.y) ? e : f;
+        }
+    }
+    if (bw == WK_NONE) return false;
+    double t = (Q->p[bw].x - a.x) * u.x + (Q->p[bw].y - a.y) * u.y;
+    *h = (wk_ray_hit){t > 0 ? t : 0, Q->p[bw], WK_NONE, bw};
+    return true;
+}
+
+/* The motorcycles of P (relative to c) with their wall hits, shot on the
+** translated copy Q. */
+static wk_status shoot_all(wk_run *R, const wk_polygon *P, const wk_polygon *Q, wk_point c,
+                           wk_motorcycle *m, uint32_t r) {
+    wk_ray_shooter sh;
+    wk_status st = wk_ray_shooter_init(R, &sh, Q);
+    if (st != WK_OK) return st;
+    for (uint32_t i = 0, j = 0; i < P->n && j < r; i++) {
+        if (!wk_polygon_is_reflex_counted(R, P, i)) continue;
+        wk_motorcycle *g = &m[j++];
+        g->vertex = i;
+        g->o = Q->p[i];
+        motion(P, i, c, g);
+        wk_ray_hit h;
+        if (!wk_ray_shoot(&sh, g->o, g->u, i, &h) &&
+            !wk_ray_shoot_brute(Q, sh.tol, g->o, g->u, i, &h) &&
+            !hit_at_origin(Q, sh.tol, i, g->u, &h)) {
+            wk_ray_shooter_clear(R, &sh);
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "ray of reflex vertex %u (%.17g, %.17g) meets no wall", i, P->p[i].x,
+                           P->p[i].y);
+        }
+        g->wall_len = h.t;
+        g->len = h.t;
+        g->wall_edge = h.edge;
+        g->wall_vertex = h.vertex;
+        g->kind = WK_MCG_WALL;
+        g->other = WK_NONE;
+        g->other_len = 0.0;
+        g->group = WK_NONE;
+    }
+    wk_ray_shooter_clear(R, &sh);
+    return WK_OK;
+}
+
+/* ============================================================ finishing */
+
+static int cmp_u32(const void *a, const void *b) {
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static int cmp_steiner(const void *a, const void *b) {
+    const wk_motorcycle_steiner *x = a, *y = b;
+    if (x->d != y->d) return x->d < y->d ? -1 : 1;
+    return x->other < y->other ? -1 : x->other > y->other;
+}
+
+/* Call f(ud, i, d, k) for every Steiner entry (k ends on i's trace at d). */
+typedef void (*steiner_fn)(void *ud, uint32_t i, double d, uint32_t k);
+static void each_steiner(const wk_motorcycle_graph *G, steiner_fn f, void *ud) {
+    for (uint32_t k = 0; k < G->n; k++) {
+        const wk_motorcycle *m = &G->m[k];
+        if (m->kind == WK_MCG_TRACE) f(ud, m->other, m->other_len, k);
+    }
+    for (uint32_t g = 0; g < G->n_groups; g++) {
+        const wk_motorcycle_group *Gr = &G->groups[g];
+        const uint32_t *mem = G->group_members + Gr->first;
+        if (Gr->on_other != WK_NONE && G->m[Gr->on_other].group != g)
+            for (uint32_t a = 0; a < Gr->count; a++) f(ud, Gr->on_other, Gr->on_len, mem[a]);
+        for (uint32_t a = 0; a < Gr->count; a++)
+            for (uint32_t b = 0; b < Gr->count; b++)
+                if (a != b) f(ud, mem[a], G->m[mem[a]].len, mem[b]);
+    }
+}
+
+static void steiner_count(void *ud, uint32_t i, double d, uint32_t k) {
+    (void)d;
+    (void)k;
+    ((uint32_t *)ud)[i + 1]++;
+}
+
+typedef struct steiner_fill_ud {
+    wk_motorcycle_steiner *out;
+    uint32_t *cursor;
+} steiner_fill_ud;
+
+static void steiner_fill(void *ud, uint32_t i, double d, uint32_t k) {
+    steiner_fill_ud *F = ud;
+    F->out[F->cursor[i]++] = (wk_motorcycle_steiner){d, k};
+}
+
+/* Wall crashes for the survivors, the groups compacted, the Steiner lists
+** and the stats. */
+static wk_status finish(sim *S, wk_motorcycle_graph *G) {
+    wk_run *R = S->R;
+    uint32_t ng = 0, nm = 0;
+    for (uint32_t g = 0; g < S->n_groups; g++)
+        if (S->groups[g].alive) {
+            ng++;
+            nm += S->groups[g].count;
+        }
+    G->groups = WK_NEW_ARRAY(R, wk_motorcycle_group, ng);
+    if (!G->groups) return WK_ENOMEM;
+    G->n_groups = ng;
+    G->group_members = WK_NEW_ARRAY(R, uint32_t, nm);
+    if (!G->group_members) return WK_ENOMEM;
+    G->n_group_members = nm;
+    for (uint32_t g = 0, k = 0, at = 0; g < S->n_groups; g++) {
+        const sim_group *A = &S->groups[g];
+        if (!A->alive) continue;
+        wk_motorcycle_group *B = &G->groups[k];
+        *B = (wk_motorcycle_group){A->p, A->t, at, A->count, A->on_other, A->on_len, A->on_edge,
+                                   A->on_vertex};
+        for (uint32_t i = A->head; i != WK_NONE; i = S->next_member[i]) {
+            G->group_members[at++] = i;
+            G->m[i].group = k;
+        }
+        qsort(G->group_members + B->first, B->count, sizeof(uint32_t), cmp_u32);
+        k++;
+    }
+    wk_motorcycle_stats *st = &G->stats;
+    st->motorcycles = G->n;
+    st->candidate_pairs = S->pairs;
+    st->simultaneous_groups = ng;
+    st->simultaneous_motorcycles = nm;
+    for (uint32_t i = 0; i < G->n; i++) {
+        wk_motorcycle *m = &G->m[i];
+        if (!S->crashed[i]) {
+            m->kind = WK_MCG_WALL;
+            m->len = m->wall_len;
+        }
+        if (m->kind == WK_MCG_WALL) st->wall_crashes++;
+        if (m->kind == WK_MCG_TRACE) st->trace_crashes++;
+    }
+    G->steiner_start = WK_NEW_ARRAY(R, uint32_t, (size_t)G->n + 1);
+    if (!G->steiner_start) return WK_ENOMEM;
+    each_steiner(G, steiner_count, G->steiner_start);
+    for (uint32_t i = 0; i < G->n; i++) {
+        if (G->steiner_start[i + 1] > UINT32_MAX - 1 - G->steiner_start[i])
+            return WK_FAIL(R, WK_ENOMEM, NULL, 0, "too many Steiner points");
+        G->steiner_start[i + 1] += G->steiner_start[i];
+    }
+    uint32_t ns = G->steiner_start[G->n];
+    G->steiner = WK_NEW_ARRAY(R, wk_motorcycle_steiner, ns);
+    if (!G->steiner) return WK_ENOMEM;
+    G->n_steiner = ns;
+    uint32_t *cursor = WK_NEW_ARRAY(R, uint32_t, G->n ? G->n : 1);
+    if (!cursor) return WK_ENOMEM;
+    memcpy(cursor, G->steiner_start, (size_t)G->n * sizeof *cursor);
+    steiner_fill_ud F = {G->steiner, cursor};
+    each_steiner(G, steiner_fill, &F);
+    WK_FREE_ARRAY(R, cursor, G->n ? G->n : 1);
+    for (uint32_t i = 0; i < G->n; i++)
+        qsort(G->steiner + G->steiner_start[i], G->steiner_start[i + 1] - G->steiner_start[i],
+              sizeof(wk_motorcycle_steiner), cmp_steiner);
+    return WK_OK;
+}
+
+/* ================================================================ build */
+
+static wk_status build(wk_run *R, const wk_polygon *P, bool use_grid, wk_motorcycle_graph **out) {
+    *out = NULL;
+    wk_status st = WK_OK;
+    wk_motorcycle_graph *G = WK_NEW_ARRAY(R, wk_motorcycle_graph, 1);
+    if (!G) return R->err.code ? R->err.code : WK_ENOMEM;
+    sim S;
+    memset(&S, 0, sizeof S);
+    S.R = R;
+    wk_point *qp = NULL;
+    wk_polygon Q = *P;
+
+    double wmax = 0;
+    for (uint32_t i = 0; i < P->n; i++)
+        if (P->w[i] > wmax) wmax = P->w[i];
+    double ts = R->opt.tol_scale > 0 ? R->opt.tol_scale : 1.0;
+    G->centre = wk_polygon_centre(P);
+    G->eps_d = ts * WK_TOL_REL * wk_polygon_scale(P);
+    G->eps_t = WK_TOL_TIME * G->eps_d / wmax;
+    uint32_t r = 0;
+    for (uint32_t i = 0; i < P->n; i++) r += wk_polygon_is_reflex(P, i);
+    G->m = WK_NEW_ARRAY(R, wk_motorcycle, r);
+    if (!G->m) goto fail;
+    G->n = r;
+
+    /* The walls in the relative frame, for the shooter. */
+    qp = WK_NEW_ARRAY(R, wk_point, P->n);
+    if (!qp) goto fail;
+    wk_point lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < P->n; i++) {
+        qp[i] = (wk_point){P->p[i].x - G->centre.x, P->p[i].y - G->centre.y};
+        lo.x = fmin(lo.x, qp[i].x);
+        lo.y = fmin(lo.y, qp[i].y);
+        hi.x = fmax(hi.x, qp[i].x);
+        hi.y = fmax(hi.y, qp[i].y);
+    }
+    Q.p = qp;
+    if ((st = shoot_all(R, P, &Q, G->centre, G->m, r)) != WK_OK) goto fail;
+    WK_FREE_ARRAY(R, qp, P->n);
+
+    S.m = G->m;
+    S.r = r;
+    S.eps_d = G->eps_d;
+    S.eps_t = G->eps_t;
+    S.grid = use_grid;
+    S.delta = WK_MCG_GRID_DELTA * G->eps_d;
+    S.crashed = WK_NEW_ARRAY(R, uint8_t, r);
+    S.grp = WK_NEW_ARRAY(R, uint32_t, r);
+    S.next_member = WK_NEW_ARRAY(R, uint32_t, r);
+    if (!S.crashed || !S.grp || !S.next_member) goto fail;
+    for (uint32_t i = 0; i < r; i++) S.grp[i] = S.next_member[i] = WK_NONE;
+    if (r > 0) {
+        st = use_grid ? grid_start(&S, lo, hi) : brute_start(&S);
+        if (st != WK_OK) goto fail;
+        if ((st = run_events(&S)) != WK_OK) goto fail;
+    }
+    if ((st = finish(&S, G)) != WK_OK) goto fail;
+    sim_clear(&S);
+    *out = G;
+    return WK_OK;
+
+fail:
+    if (st == WK_OK) st = R->err.code != WK_OK ? R->err.code : WK_ENOMEM;
+    WK_FREE_ARRAY(R, qp, P->n);
+    sim_clear(&S);
+    wk_motorcycle_graph_free(R, G);
+    return st;
+}
+
+wk_status wk_motorcycle_graph_build(wk_run *R, const wk_polygon *P, wk_motorcycle_graph **out) {
+    return build(R, P, true, out);
+}
+
+wk_status wk_motorcycle_graph_build_brute(wk_run *R, const wk_polygon *P,
+                                          wk_motorcycle_graph **out) {
+    return build(R, P, false, out);
+}
+
+void wk_motorcycle_graph_free(wk_run *R, wk_motorcycle_graph *G) {
+    if (!G) return;
+    WK_FREE_ARRAY(R, G->m, G->n);
+    WK_FREE_ARRAY(R, G->groups, G->n_groups);
+    WK_FREE_ARRAY(R, G->group_members, G->n_group_members);
+    if (G->steiner_start) WK_FREE_ARRAY(R, G->steiner_start, (size_t)G->n + 1);
+    WK_FREE_ARRAY(R, G->steiner, G->n_steiner);
+    WK_FREE_ARRAY(R, G, 1);
+}
+
+/* ================================================================ check */
+
+static bool fail_why(char *why, size_t size, const char *fmt, ...) {
+    if (why && size) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(why, size, fmt, ap);
+        va_end(ap);
+    }
+    return false;
+}
+
+/* Distance from p to the segment a + [0, len] u (u a unit vector). */
+static double dist_to_trace(wk_point p, wk_point a, wk_point u, double len) {
+    double t = (p.x - a.x) * u.x + (p.y - a.y) * u.y;
+    t = t < 0 ? 0 : t > len ? len : t;
+    return hypot(p.x - (a.x + t * u.x), p.y - (a.y + t * u.y));
+}
+
+/* Distance from p to the segment [a, b]. */
+static double dist_to_segment(wk_point p, wk_point a, wk_point b) {
+    double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+    double t = l2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+static bool same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* Whether (d, k) is a Steiner entry that G's records give on i's trace. */
+static bool steiner_expected(const wk_motorcycle_graph *G, uint32_t i, double d, uint32_t k) {
+    if (k >= G->n || k == i) return false;
+    const wk_motorcycle *mk = &G->m[k];
+    if (mk->kind == WK_MCG_TRACE && mk->other == i && same_bits(mk->other_len, d)) return true;
+    if (mk->kind != WK_MCG_SIMULTANEOUS) return false;
+    const wk_motorcycle_group *g = &G->groups[mk->group];
+    if (g->on_other == i && G->m[i].group != mk->group && same_bits(g->on_len, d)) return true;
+    return G->m[i].group == mk->group && same_bits(G->m[i].len, d);
+}
+
+bool wk_motorcycle_graph_check(const wk_motorcycle_graph *G, const wk_polygon *P, char *why,
+                               size_t size) {
+    double tol_d = WK_MCG_CHECK_SLACK * G->eps_d, tol_t = WK_MCG_CHECK_SLACK * G->eps_t;
+    wk_point c = G->centre;
+    uint32_t r = 0;
+    for (uint32_t v = 0; v < P->n; v++) {
+        if (!wk_polygon_is_reflex(P, v)) continue;
+        if (r >= G->n) return fail_why(why, size, "more reflex vertices than %u motorcycles", G->n);
+        if (G->m[r].vertex != v)
+            return fail_why(why, size, "motorcycle %u starts at vertex %u, want %u", r,
+                            G->m[r].vertex, v);
+        r++;
+    }
+    if (r != G->n) return fail_why(why, size, "%u motorcycles for %u reflex vertices", G->n, r);
+    uint64_t walls = 0, traces = 0, members = 0;
+    for (uint32_t i = 0; i < G->n; i++) {
+        const wk_motorcycle *m = &G->m[i];
+        wk_point o = {P->p[m->vertex].x - c.x, P->p[m->vertex].y - c.y};
+        if (!same_bits(o.x, m->o.x) || !same_bits(o.y, m->o.y))
+            return fail_why(why, size, "motorcycle %u: origin is not its vertex", i);
+        if (!(fabs(hypot(m->u.x, m->u.y) - 1.0) <= WK_ANGLE_EQ))
+            return fail_why(why, size, "motorcycle %u: direction not a unit vector", i);
+        if (!(m->speed > 0))
+            return fail_why(why, size, "motorcycle %u: speed %g", i, m->speed);
+        if (!(m->len >= 0 && m->len <= m->wall_len))
+            return fail_why(why, size, "motorcycle %u: len %.17g outside [0, wall_len %.17g]", i,
+                            m->len, m->wall_len);
+        wk_point x = wk_motorcycle_crash_point(m);
+        double tx = wk_motorcycle_time_at(m, m->len);
+        if (m->kind == WK_MCG_WALL) {
+            walls++;
+            if (m->len != m->wall_len)
+                return fail_why(why, size, "motorcycle %u: wall crash before its wall", i);
+        }
+        /* The ray's wall hit, whatever the kind. */
+        if ((m->wall_edge == WK_NONE) == (m->wall_vertex == WK_NONE))
+            return fail_why(why, size, "motorcycle %u: wall hit is neither edge nor vertex", i);
+        wk_point wx = {m->o.x + m->wall_len * m->u.x, m->o.y + m->wall_len * m->u.y};
+        double dw;
+        if (m->wall_edge != WK_NONE) {
+            uint32_t e = m->wall_edge, f = wk_polygon_next(P, e);
+            wk_point a = {P->p[e].x - c.x, P->p[e].y - c.y}, b = {P->p[f].x - c.x, P->p[f].y - c.y};
+            dw = dist_to_segment(wx, a, b);
+        } else {
+            wk_point a = {P->p[m->wall_vertex].x - c.x, P->p[m->wall_vertex].y - c.y};
+            dw = hypot(wx.x - a.x, wx.y - a.y);
+        }
+        if (!(dw <= tol_d))
+            return fail_why(why, size, "motorcycle %u: wall point %.3g off its wall", i, dw);
+        if (m->kind == WK_MCG_TRACE) {
+            traces++;
+            if (m->other >= G->n || m->other == i)
+                return fail_why(why, size, "motorcycle %u: crashes into motorcycle %u", i, m->other);
+            const wk_motorcycle *w = &G->m[m->other];
+            double d = dist_to_trace(x, w->o, w->u, w->len);
+            if (!(d <= tol_d))
+                return fail_why(why, size, "motorcycle %u: crash point %.3g off the trace of %u",
+                                i, d, m->other);
+            if (!(m->other_len <= w->len + tol_d))
+                return fail_why(why, size, "motorcycle %u: %u never reached the crash point", i,
+                                m->other);
+            if (!(wk_motorcycle_time_at(w, m->other_len) <= tx + tol_t))
+                return fail_why(why, size, "motorcycle %u: %u reached the crash point later", i,
+                                m->other);
+            if (m->group != WK_NONE)
+                return fail_why(why, size, "motorcycle %u: a trace crash in a group", i);
+        } else if (m->kind == WK_MCG_SIMULTANEOUS) {
+            if (m->group >= G->n_groups)
+                return fail_why(why, size, "motorcycle %u: no group", i);
+            const wk_motorcycle_group *g = &G->groups[m->group];
+            double d = hypot(x.x - g->p.x, x.y - g->p.y);
+            if (!(d <= g->count * tol_d))
+                return fail_why(why, size, "motorcycle %u: crash point %.3g from its group's", i, d);
+            if (!(fabs(tx - g->t) <= g->count * tol_t))
+                return fail_why(why, size, "motorcycle %u: crash time %.17g, group's %.17g", i, tx,
+                                g->t);
+        } else if (m->kind != WK_MCG_WALL) {
+            return fail_why(why, size, "motorcycle %u: crash kind %d", i, (int)m->kind);
+        }
+        if (m->kind != WK_MCG_SIMULTANEOUS && m->group != WK_NONE)
+            return fail_why(why, size, "motorcycle %u: in a group but kind %d", i, (int)m->kind);
+    }
+    uint32_t at = 0;
+    for (uint32_t k = 0; k < G->n_groups; k++) {
+        const wk_motorcycle_group *g = &G->groups[k];
+        if (g->first != at || g->count < 2 || g->count > G->n_group_members - at)
+            return fail_why(why, size, "group %u: members [%u, +%u) malformed", k, g->first,
+                            g->count);
+        for (uint32_t a = 0; a < g->count; a++) {
+            uint32_t id = G->group_members[at + a];
+            if (id >= G->n || G->m[id].group != k || (a > 0 && id <= G->group_members[at + a - 1]))
+                return fail_why(why, size, "group %u: member %u wrong", k, id);
+        }
+        if (g->on_other != WK_NONE) {
+            if (g->on_other >= G->n) return fail_why(why, size, "group %u: on %u", k, g->on_other);
+            const wk_motorcycle *w = &G->m[g->on_other];
+            double d = dist_to_trace(g->p, w->o, w->u, w->len);
+            if (!(d <= tol_d))
+                return fail_why(why, size, "group %u: point %.3g off the trace of %u", k, d,
+                                g->on_other);
+        }
+        at += g->count;
+        members += g->count;
+    }
+    if (at != G->n_group_members)
+        return fail_why(why, size, "%u group members listed, %u in groups", G->n_group_members, at);
+    /* Steiner lists: sorted, each entry one the records give, and as many
+    ** as they give. */
+    if (G->steiner_start[0] != 0 || G->steiner_start[G->n] != G->n_steiner)
+        return fail_why(why, size, "Steiner offsets malformed");
+    uint64_t want = 0;
+    for (uint32_t k = 0; k < G->n; k++) {
+        const wk_motorcycle *m = &G->m[k];
+        if (m->kind == WK_MCG_TRACE) want++;
+    }
+    for (uint32_t k = 0; k < G->n_groups; k++) {
+        const wk_motorcycle_group *g = &G->groups[k];
+        if (g->on_other != WK_NONE && G->m[g->on_other].group != k) want += g->count;
+        want += (uint64_t)g->count * (g->count - 1);
+    }
+    if (want != G->n_steiner)
+        return fail_why(why, size, "%u Steiner points, the records give %llu", G->n_steiner,
+                        (unsigned long long)want);
+    for (uint32_t i = 0; i < G->n; i++) {
+        if (G->steiner_start[i + 1] < G->steiner_start[i])
+            return fail_why(why, size, "Steiner offsets decrease at %u", i);
+        for (uint32_t s = G->steiner_start[i]; s < G->steiner_start[i + 1]; s++) {
+            const wk_motorcycle_steiner *e = &G->steiner[s];
+            if (!steiner_expected(G, i, e->d, e->other))
+                return fail_why(why, size, "motorcycle %u: Steiner point (%.17g, %u) unexplained",
+                                i, e->d, e->other);
+            if (s > G->steiner_start[i] && cmp_steiner(&G->steiner[s - 1], e) >= 0)
+                return fail_why(why, size, "motorcycle %u: Steiner points not sorted", i);
+        }
+    }
+    const wk_motorcycle_stats *st = &G->stats;
+    if (st->motorcycles != G->n || st->wall_crashes != walls || st->trace_crashes != traces ||
+        st->simultaneous_groups != G->n_groups || st->simultaneous_motorcycles != members ||
+        walls + traces + members != G->n)
+        return fail_why(why, size, "stats do not match the records");
+    return true;
+}
+
+bool wk_motorcycle_graph_same(const wk_motorcycle_graph *A, const wk_motorcycle_graph *B,
+                              char *why, size_t size) {
+    if (A->n != B->n || A->n_groups != B->n_groups || A->n_group_members != B->n_group_members ||
+        A->n_steiner != B->n_steiner)
+        return fail_why(why, size, "sizes differ: %u/%u/%u/%u vs %u/%u/%u/%u", A->n, A->n_groups,
+                        A->n_group_members, A->n_steiner, B->n, B->n_groups, B->n_group_members,
+                        B->n_steiner);
+    if (!same_bits(A->centre.x, B->centre.x) || !same_bits(A->centre.y, B->centre.y) ||
+        !same_bits(A->eps_d, B->eps_d) || !same_bits(A->eps_t, B->eps_t))
+        return fail_why(why, size, "frames differ");
+    for (uint32_t i = 0; i < A->n; i++) {
+        const wk_motorcycle *a = &A->m[i], *b = &B->m[i];
+        if (!same_bits(a->o.x, b->o.x) || !same_bits(a->o.y, b->o.y) ||
+            !same_bits(a->u.x, b->u.x) || !same_bits(a->u.y, b->u.y) ||
+            !same_bits(a->speed, b->speed) || !same_bits(a->len, b->len) ||
+            !same_bits(a->wall_len, b->wall_len) || !same_bits(a->other_len, b->other_len) ||
+            a->vertex != b->vertex || a->wall_edge != b->wall_edge ||
+            a->wall_vertex != b->wall_vertex || a->kind != b->kind || a->other != b->other ||
+            a->group != b->group)
+            return fail_why(why, size,
+                            "motorcycle %u (vertex %u) differs: kind %d/%d other %u/%u len "
+                            "%.17g/%.17g group %u/%u",
+                            i, a->vertex, (int)a->kind, (int)b->kind, a->other, b->other, a->len,
+                            b->len, a->group, b->group);
+    }
+    for (uint32_t k = 0; k < A->n_groups; k++) {
+        const wk_motorcycle_group *a = &A->groups[k], *b = &B->groups[k];
+        if (!same_bits(a->p.x, b->p.x) || !same_bits(a->p.y, b->p.y) || !same_bits(a->t, b->t) ||
+            a->first != b->first || a->count != b->count || a->on_other != b->on_other ||
+            !same_bits(a->on_len, b->on_len) || a->on_edge != b->on_edge ||
+            a->on_vertex != b->on_vertex)
+            return fail_why(why, size, "group %u differs", k);
+    }
+    for (uint32_t k = 0; k < A->n_group_members; k++)
+        if (A->group_members[k] != B->group_members[k])
+            return fail_why(why, size, "group member %u differs", k);
+    for (uint32_t i = 0; i <= A->n; i++)
+        if (A->steiner_start[i] != B->steiner_start[i])
+            return fail_why(why, size, "Steiner offset %u differs", i);
+    for (uint32_t k = 0; k < A->n_steiner; k++)
+        if (!same_bits(A->steiner[k].d, B->steiner[k].d) ||
+            A->steiner[k].other != B->steiner[k].other)
+            return fail_why(why, size, "Steiner point %u differs", k);
+    const wk_motorcycle_stats *x = &A->stats, *y = &B->stats;
+    if (x->motorcycles != y->motorcycles || x->wall_crashes != y->wall_crashes ||
+        x->trace_crashes != y->trace_crashes || x->simultaneous_groups != y->simultaneous_groups ||
+        x->simultaneous_motorcycles != y->simultaneous_motorcycles)
+        return fail_why(why, size, "stats differ");
+    return true;
+}
