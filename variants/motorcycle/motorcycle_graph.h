@@ -86,9 +86,16 @@
 ** when the crossing x lies in that cell (so each pair once).  A pair that
 ** meets at x is listed in x's cell by both before the event's time (the
 ** listing runs at least 3 eps_d ahead of any crash that could matter
-** there), so no valid event is missed.  Expected O((n + M) log n) for M
-** cells crossed by the traces and O(1) motorcycles per cell; traces
-** converging on one point cost quadratic in their number there.
+** there), so no valid event is missed.  O((n + M + K) log n) for M
+** cells crossed by the final traces (plus one slab each) and K pairs
+** sharing a cell: near n log n when traces are short against the cell
+** size (comb, rectilinear, spiral: 0.1 s at n = 10^5, 1 s at 10^6), but
+** quadratic when many long traces share cells: the star and random
+** families' needle notches send ~r/2 fast motorcycles radially into a hub
+** at the centre (K ~ r^2 / 8; 24 s at n = 10^5).  A quadtree refinement of
+** the grid does not help there (tried: the spokes are dense along their
+** whole length, so K stays ~ r^2 / 10 and the listings grow); that needs a
+** crossing query inside a cell (chords whose ends interleave), not done.
 ** wk_motorcycle_graph_build_brute tests all pairs up front.
 */
 #ifndef WK_MOTORCYCLE_GRAPH_H
