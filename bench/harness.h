@@ -54,6 +54,7 @@ typedef struct options {
     int shard_i, shard_n;
     bool resume;
     bool quiet;
+    bool qsort_ref;        /* measure the qsort() reference (qsort_ref.h) */
     char out[1024];
     uint64_t cgal_max_n;   /* skip cgal above this n; 0: no cap */
     char self_test[16];    /* crash|hang|oom, test-only */

@@ -3,8 +3,9 @@
 ** JSON-lines twin (OUT.jsonl: OUT without ".csv", plus ".jsonl").
 **
 ** The CSV: a block of '#' comment lines (machine, compiler, git commit,
-** generator version, command, limits, the meaning of the columns), the
-** header row, then one row per run:
+** generator version, command, limits, the meaning of the columns; with
+** --qsort-ref the "# qsort_ref_s:" line of qsort_ref.h, and another after
+** the last row), the header row, then one row per run:
 **
 **   variant,family,n,r_req,holes,k,weights,seed,repeat   the configuration
 **                                                  (its key)

@@ -48,6 +48,11 @@ const char bench_usage_text[] =
     "  --out CSV           output; rows also go to CSV's .jsonl twin\n"
     "  --dry-run           list the configurations and exit\n"
     "  --quiet             no progress line\n"
+    "  --qsort-ref         the machine's reference: qsort() of 10^6 random doubles\n"
+    "                      (seed 1), median of 5 timings.  Alone (no --family, --n):\n"
+    "                      print it in seconds and exit.  With a sweep: measured\n"
+    "                      before the first run and after the last, written to the\n"
+    "                      CSV as '# qsort_ref_s: SECONDS (...)' comment lines\n"
     "  --list-variants     registered variants\n"
     "\n"
     "statuses: ok timeout out-of-memory crash invalid rejected unsupported algo-failed\n"
@@ -211,6 +216,7 @@ void set_option(options *o, const char *key, const char *val) {
     else if (!strcmp(key, "validate")) o->validate = parse_bool(key, val);
     else if (!strcmp(key, "resume")) o->resume = parse_bool(key, val);
     else if (!strcmp(key, "quiet")) o->quiet = parse_bool(key, val);
+    else if (!strcmp(key, "qsort-ref")) o->qsort_ref = parse_bool(key, val);
     else if (!strcmp(key, "jobs")) {
         o->jobs = (int)parse_u64(key, val);
         if (o->jobs < 1) die_usage("--jobs must be >= 1");
@@ -282,7 +288,8 @@ bool options_from_argv(options *o, int argc, char **argv, bool *dry, int *exit_c
         }
         if (strncmp(a, "--", 2) != 0) die_usage("unexpected argument '%s'", a);
         const char *key = a + 2;
-        if (!strcmp(key, "validate") || !strcmp(key, "resume") || !strcmp(key, "quiet")) {
+        if (!strcmp(key, "validate") || !strcmp(key, "resume") || !strcmp(key, "quiet") ||
+            !strcmp(key, "qsort-ref")) {
             set_option(o, key, "true");
             continue;
         }

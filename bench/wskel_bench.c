@@ -22,6 +22,7 @@
 #define _GNU_SOURCE
 #include "configs.h"
 #include "harness.h"
+#include "qsort_ref.h"
 #include "rows.h"
 #include "runner.h"
 #include "spec.h"
@@ -103,6 +104,11 @@ int main(int argc, char **argv) {
     bool dry;
     int code;
     if (!options_from_argv(&o, argc, argv, &dry, &code)) return code;
+    /* --qsort-ref alone: the reference, nothing else. */
+    if (o.qsort_ref && !dry && o.families.n == 0 && o.n.n == 0) {
+        printf("%.6g\n", qsort_ref_measure(NULL));
+        return 0;
+    }
     char cgal_bin[1100];
     find_cgal(cgal_bin, sizeof cgal_bin);
     options_finish(&o, cgal_bin);
@@ -157,8 +163,12 @@ int main(int argc, char **argv) {
     }
     if (fresh) {
         machine_header(csv, argc, argv, &o, total, n_shard);
+        if (o.qsort_ref) qsort_ref_comment(csv, "before the runs");
         write_header_row(csv);
-    } else write_resume_line(csv, n_todo, n_shard, argv[0]);
+    } else {
+        write_resume_line(csv, n_todo, n_shard, argv[0]);
+        if (o.qsort_ref) qsort_ref_comment(csv, "before the runs");
+    }
     fflush(csv);
     fflush(js);
     signal(SIGPIPE, SIG_IGN);
@@ -166,6 +176,7 @@ int main(int argc, char **argv) {
     double t0 = now_s();
     long counts[N_STATUS] = {0};
     run_sweep(&o, todo, n_todo, cgal_bin, results, ready, csv, js, done.legacy, counts);
+    if (o.qsort_ref) qsort_ref_comment(csv, "after the runs");
     char el[32];
     fmt_dur(now_s() - t0, el, sizeof el);
     if (!o.quiet) {

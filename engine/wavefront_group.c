@@ -94,45 +94,58 @@ static wk_status push_local(wk_wavefront *W, uint32_t u) {
     if (W->v[u].seen == W->stamp) return WK_OK;
     W->v[u].seen = W->stamp;
     W->v[u].at = WK_NONE;
-    W->v[u].cyc = 0;
+    W->v[u].cyc = WK_NONE;
     return wf_push_u32(W->R, &W->comp, &W->n_comp, &W->cap_comp, u);
 }
 
-/* A group of one event touches a handful of vertices, not its whole cycle:
-** the seed, the target piece of a split, and LOCAL_REACH neighbours on each
-** side of them.  Walking the whole cycle for each event made a big convex
-** wavefront quadratic (a 100,000-gon: 10^10 steps).  Groups of several
-** events, or with forced vertices, are degenerate and walk whole cycles. */
+/* A group of a few events touches a handful of vertices, not their whole
+** cycles: each seed, the target piece of a split, and LOCAL_REACH
+** neighbours on each side of them.  Walking whole cycles for each event
+** made a big convex wavefront quadratic (a 100,000-gon: 10^10 steps), and
+** so did groups of two events (the halves of a symmetric feature, the two
+** traces of a vertex event) on a fractal coastline.  Groups with forced
+** vertices are degenerate and walk whole cycles.
+** Cycle ids: a cycle the walks cover completely gets its own id (1, 2, ..:
+** it may vanish in this group); the open stretches of longer cycles share
+** id 0, which counts as alive (local_open). */
 #define LOCAL_REACH 3
-static wk_status collect_local(wk_wavefront *W, bool *closed) {
+static wk_status collect_local(wk_wavefront *W) {
     W->stamp++;
     W->n_comp = 0;
+    for (uint32_t i = 0; i < W->n_seeds; i++) {
+        const wk_wf_vertex *S = &W->v[W->seeds[i]];
+        uint32_t centres[3] = {W->seeds[i], WK_NONE, WK_NONE};
+        if (S->ev_kind == WK_WF_SPLIT) {
+            centres[1] = S->ev_a;
+            centres[2] = S->ev_b;
+        }
+        for (int c = 0; c < 3; c++) {
+            if (centres[c] == WK_NONE || !W->v[centres[c]].alive) continue;
+            uint32_t a = centres[c], b = centres[c];
+            if (push_local(W, a) != WK_OK) return W->R->err.code;
+            for (int k = 0; k < LOCAL_REACH; k++) {
+                a = W->v[a].prev;
+                b = W->v[b].next;
+                if (push_local(W, a) != WK_OK || push_local(W, b) != WK_OK) return W->R->err.code;
+            }
+        }
+    }
+    /* open stretches (their first vertex's prev is outside): id 0 */
+    W->local_open = false;
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        uint32_t h = W->comp[i];
+        if (W->v[W->v[h].prev].seen == W->stamp) continue;
+        W->local_open = true;
+        for (uint32_t u = h; W->v[u].seen == W->stamp && W->v[u].cyc == WK_NONE; u = W->v[u].next)
+            W->v[u].cyc = 0;
+    }
+    /* the rest lies on cycles the walks cover completely */
     W->n_cyc = 1;
-    const wk_wf_vertex *S = &W->v[W->seeds[0]];
-    uint32_t centres[3] = {W->seeds[0], WK_NONE, WK_NONE};
-    if (S->ev_kind == WK_WF_SPLIT) {
-        centres[1] = S->ev_a;
-        centres[2] = S->ev_b;
-    }
-    /* closed: the walk from the seed went round its whole cycle */
-    *closed = false;
-    uint32_t u = W->seeds[0];
-    for (int k = 0; k <= 2 * LOCAL_REACH + 1; k++) {
-        u = W->v[u].next;
-        if (u == W->seeds[0]) {
-            *closed = true;
-            break;
-        }
-    }
-    for (int c = 0; c < 3; c++) {
-        if (centres[c] == WK_NONE || !W->v[centres[c]].alive) continue;
-        uint32_t a = centres[c], b = centres[c];
-        if (push_local(W, a) != WK_OK) return W->R->err.code;
-        for (int k = 0; k < LOCAL_REACH; k++) {
-            a = W->v[a].prev;
-            b = W->v[b].next;
-            if (push_local(W, a) != WK_OK || push_local(W, b) != WK_OK) return W->R->err.code;
-        }
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        uint32_t h = W->comp[i];
+        if (W->v[h].cyc != WK_NONE) continue;
+        for (uint32_t u = h; W->v[u].cyc == WK_NONE; u = W->v[u].next) W->v[u].cyc = W->n_cyc;
+        W->n_cyc++;
     }
     /* the vertices just outside take part as untouched ends of pieces */
     for (uint32_t i = 0, n = W->n_comp; i < n; i++) {
@@ -239,12 +252,8 @@ static wk_status plan_nodes(wk_wavefront *W, double t) {
         if (add_cluster(W, wk_wf_pos(&W->v[W->forced[i]], t), &k) != WK_OK) return R->err.code;
     }
     W->local_open = false;
-    if (W->n_seeds == 1 && W->n_forced == 0) {
-        bool closed;
-        if (collect_local(W, &closed) != WK_OK) return R->err.code;
-        W->local_open = !closed;
-        return WK_OK;
-    }
+    W->local_walk = W->n_forced == 0;
+    if (W->local_walk) return collect_local(W);
     return collect_cycles(W);
 }
 
@@ -613,8 +622,9 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
     W->n_cl = W->n_pin = W->n_sub = W->n_pair = 0;
     if (plan_nodes(W, t) != WK_OK) return R->err.code;
     plan_arrivals(W, t);
-    if (W->n_seeds == 1 && W->n_forced == 0 && !local_walk_suffices(W, t)) {
+    if (W->local_walk && !local_walk_suffices(W, t)) {
         /* the group reaches beyond the local walk: take whole cycles */
+        W->local_walk = false;
         W->local_open = false;
         if (collect_cycles(W) != WK_OK) return R->err.code;
         plan_arrivals(W, t);
@@ -866,7 +876,7 @@ static wk_status count_group(wk_wavefront *W, double t) {
     ** none of its nodes starts a new vertex (flag 1: alive) */
     if (WK_GROW(R, W->cycflag, W->cap_cycflag, W->n_cyc + 1) != WK_OK) return R->err.code;
     memset(W->cycflag, 0, W->n_cyc);
-    if (W->local_open) W->cycflag[0] = 1; /* only part of its cycle was looked at */
+    if (W->local_open) W->cycflag[0] = 1; /* only part of these cycles was looked at */
     for (uint32_t i = 0; i < W->n_comp; i++) {
         const wk_wf_vertex *u = &W->v[W->comp[i]];
         if (u->at == WK_NONE || W->cl[u->at].pairs) W->cycflag[u->cyc] = 1;

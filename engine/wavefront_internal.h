@@ -89,7 +89,8 @@ struct wk_wavefront {
     uint32_t *slot; uint32_t n_slot, cap_slot;
     uint32_t *fresh; uint32_t n_fresh, cap_fresh;
     uint32_t *dead; uint32_t n_dead, cap_dead; /* vertices ended in this group */
-    bool local_open;   /* this group looked at part of one cycle only */
+    bool local_walk;   /* this group's vertices come from local walks (collect_local) */
+    bool local_open;   /* ... and some of them are stretches of longer cycles */
     uint8_t *cycflag; uint32_t n_cyc, cap_cycflag;
     uint32_t *run, *run_node; uint32_t n_run, cap_run, cap_run_node; /* collinear runs */
     const wk_split_finder *finder; /* how split events are found */

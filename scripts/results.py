@@ -19,7 +19,8 @@ harness's CSV through this module, so the format is understood in one place:
     going away) need no change here.
 
 Also the order of k (empty = no cache, integers, then max), k as a number
-for the model, group-by helpers and the log-log slope.  Plain Python only.
+for the model, group-by helpers, the log-log slope and the qsort() reference
+of the '#' block (qsort_ref, written by wskel-bench --qsort-ref).  Plain Python only.
 """
 import csv
 import math
@@ -160,6 +161,25 @@ def k_value(row):
     if k == "max":
         return float(max(row["r"] or 1, 1))
     return float(k)
+
+
+def qsort_ref(comments):
+    """The machine's qsort() reference of a CSV (wskel-bench --qsort-ref, see
+    bench/qsort_ref.h): the median of its `qsort_ref_s: SECONDS (...)`
+    comment lines (comments as load_csv returns them), or None if it has
+    none."""
+    vals = []
+    for c in comments:
+        if c.startswith("qsort_ref_s:"):
+            try:
+                vals.append(float(c.split()[1]))
+            except (IndexError, ValueError):
+                raise ValueError("bad qsort reference line: %r" % c)
+    if not vals:
+        return None
+    vals.sort()
+    m = len(vals) // 2
+    return vals[m] if len(vals) % 2 else 0.5 * (vals[m - 1] + vals[m])
 
 
 def loglog_slope(xs, ys):

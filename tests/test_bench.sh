@@ -13,7 +13,14 @@
 #   5. the holes axis: holes > 0 left out for families without holes,
 #      'unsupported' for monotone, the spec key; a CSV of before the holes
 #      column resumes as holes = 0 and keeps its columns, and regress.py
-#      compares a new run with such a baseline.
+#      compares a new run with such a baseline;
+#   6. the qsort() reference (--qsort-ref): alone it prints one positive
+#      number of seconds; in a sweep (flag or spec key) the CSV gets a
+#      '# qsort_ref_s:' line before and after the runs, rows and columns as
+#      without it, --resume adds one more, scripts/results.py reads them;
+#   7. scripts/perf_large.sh on small n: one CSV for all variants with their
+#      qsort lines, --max-n honoured, summary.csv and REPORT.md written;
+#      an unknown variant or a bad option is a usage error (64).
 set -u
 PY=/usr/bin/python3
 BENCH=bin/wskel-bench
@@ -227,6 +234,50 @@ check "legacy CSV: resume refuses holes > 0" \
 drop_holes "$T/base.csv" "$T/base_legacy.csv"
 check "legacy CSV: regress.py compares a new run with it (holes = 0)" \
     '$PY scripts/regress.py $T/run.csv $T/base_legacy.csv --time-tol 3 > $T/r8.txt && grep -q "0 regressions" $T/r8.txt'
+
+# ---- 6. the qsort() reference
+positive() { $PY -c 'import sys; v = float(sys.argv[1]); sys.exit(0 if 0 < v < 100 else 1)' "$1" 2>/dev/null; }
+qref=$($BENCH --qsort-ref); qrc=$?
+check "qsort-ref alone: exit 0, one positive number of seconds" \
+    '[ $qrc = 0 ] && [ $(echo "$qref" | wc -l) = 1 ] && positive "$qref"'
+qsweep=(--family star,coastline --n 200 --seeds 1,2 --quiet)
+$BENCH "${qsweep[@]}" --qsort-ref --out "$T/qs.csv"
+$BENCH "${qsweep[@]}" --out "$T/noqs.csv"
+qline=$(grep "^# qsort_ref_s: " "$T/qs.csv" | head -1)
+check "qsort-ref sweep: a line before the header row and one after the runs" \
+    '[ $(grep -c "^# qsort_ref_s: [0-9.e-]* (before the runs; qsort() of 1000000 doubles" $T/qs.csv) = 1 ] &&
+     [ $(grep -c "^# qsort_ref_s: [0-9.e-]* (after the runs;" $T/qs.csv) = 1 ] &&
+     [ "$(grep -v "^#" $T/qs.csv | head -1)" = "$(grep -v "^#" $T/noqs.csv | head -1)" ] &&
+     [ "$(grep -n "^# qsort_ref_s" $T/qs.csv | head -1 | cut -d: -f1)" -lt "$(grep -vn "^#" $T/qs.csv | head -1 | cut -d: -f1)" ] &&
+     positive "$(echo "$qline" | cut -d" " -f3)"'
+check "qsort-ref sweep: the same rows as without it" \
+    'cmp -s <(stable_cols $T/qs.csv) <(stable_cols $T/noqs.csv) && [ $(grep -vc "^#" $T/qs.csv) = 5 ]'
+check "qsort-ref sweep: results.qsort_ref reads a positive median" \
+    'positive "$($PY -c "import sys; sys.path.insert(0, \"scripts\"); import results; print(results.qsort_ref(results.load_csv(sys.argv[1])[0]))" $T/qs.csv)"'
+printf 'family = coastline\nn = 100\nqsort-ref\n' > "$T/qs.spec"
+$BENCH --spec "$T/qs.spec" --quiet --out "$T/qs2.csv"
+check "qsort-ref: spec key" '[ $(grep -c "^# qsort_ref_s: " $T/qs2.csv) = 2 ]'
+$BENCH --spec "$T/qs.spec" --n 100,150 --quiet --resume --out "$T/qs2.csv"
+check "qsort-ref: --resume appends its own lines and the new row" \
+    '[ $(grep -c "^# qsort_ref_s: " $T/qs2.csv) = 4 ] && [ $(grep -vc "^#" $T/qs2.csv) = 3 ]'
+check "qsort-ref: off by default" '! grep -q qsort_ref $T/noqs.csv'
+
+# ---- 7. scripts/perf_large.sh
+bash scripts/perf_large.sh --n 100,200,400 --max-n arrangement=200 --out "$T/large" \
+    naive arrangement > "$T/large.out" 2>&1
+lrc=$?
+check "perf_large: runs, one CSV with every variant and its qsort lines" \
+    '[ $lrc = 0 ] && [ $(grep -vc "^#" $T/large/large.csv) = 11 ] && [ $(grep -c "^# qsort_ref_s: " $T/large/large.csv) = 4 ]'
+check "perf_large: --max-n leaves arrangement at n <= 200" \
+    '! grep -q "^arrangement,[a-z]*,400," $T/large/large.csv && grep -q "^naive,coastline,400," $T/large/large.csv'
+check "perf_large: summary.csv (4 groups) and REPORT.md" \
+    '[ $(wc -l < $T/large/summary.csv) = 5 ] && grep -q "^naive,coastline,400," $T/large/summary.csv &&
+     grep -q "| arrangement | star | 200 |" $T/large/REPORT.md && grep -q "qsort reference" $T/large/REPORT.md'
+bash scripts/perf_large.sh --out "$T/large2" nope 2> "$T/large2.err"; lrc=$?
+check "perf_large: unknown variant is a usage error (64)" \
+    '[ $lrc = 64 ] && grep -q "unknown variant .nope." $T/large2.err && [ ! -e $T/large2/large.csv ]'
+bash scripts/perf_large.sh --max-n naive naive 2>/dev/null; lrc=$?
+check "perf_large: a bad --max-n is a usage error (64)" '[ $lrc = 64 ]'
 
 # ---- usage errors
 check "unknown variant is a usage error (64)" \

@@ -63,7 +63,7 @@ BUDGET = float(os.environ.get("WSKEL_CGAL_BUDGET", "120"))
 JOBS = max(1, int(os.environ.get("WSKEL_CGAL_JOBS", "2")))
 HOLES_SEEDS = int(os.environ.get("WSKEL_CGAL_HOLES_SEEDS", "4"))
 HOLES_SIZES = [(12, 1), (20, 2), (40, 3), (60, 5), (100, 1), (100, 8), (200, 4), (300, 20), (600, 50)]
-HOLES_VARIANTS = ["naive", "arrangement"]
+HOLES_VARIANTS = ["naive", "arrangement", "motorcycle"]
 # Known disagreements on inputs with holes: case<TAB>variant<TAB>a substring of
 # the failure; the inputs are in tests/cgal/holes_known/.  A listed case that
 # fails otherwise, or agrees, fails the test (so the list stays true).

@@ -21,6 +21,7 @@
 
 #include "generators.h"
 #include "helpers.h"
+#include "rng.h"
 
 static const uint32_t sizes[] = {8, 9, 10, 11, 13, 16, 31, 64, 100, 257, 500, 1000, 2000};
 #define N_SIZES (sizeof sizes / sizeof sizes[0])
@@ -35,7 +36,7 @@ static int64_t expected_r(const char *f, uint32_t n, int64_t r) {
     if (!strcmp(f, "crossing")) return r >= 0 ? r : 2 * (((int64_t)n - 4) / 6);
     if (!strcmp(f, "monotone")) return r >= 0 ? r : ((int64_t)n - 2) / 2;
     if (!strcmp(f, "star")) return r;
-    return -1; /* random */
+    return -1; /* random, coastline */
 }
 
 static bool family_takes(const char *f, uint32_t n) {
@@ -264,6 +265,7 @@ Test(generators, impossible_parameters) {
         {"convex", 20, 1, WK_EINPUT, "convex: r=1 cannot be chosen"},
         {"spiral", 5, -1, WK_EINPUT, "spiral: n=5 < 6"},
         {"random", 20, 3, WK_EINPUT, "random: r cannot be chosen"},
+        {"coastline", 100, 50, WK_EINPUT, "coastline: r cannot be chosen"},
         {"star", 2, -1, WK_EINPUT, "star: n=2 is outside [3, "},
         {"convex", WK_GEN_N_MAX + 1, -1, WK_EINPUT, "is outside"},
         {"hexagon", 20, -1, WK_EUSAGE, "unknown family 'hexagon'"},
@@ -411,7 +413,8 @@ Test(generators, allocation_failures_are_clean) {
         uint32_t n;
         int64_t r;
     } cases[] = {{"star", 50, 10}, {"notched", 50, -1}, {"monotone", 50, 20}, {"random", 50, -1},
-                 {"rectilinear", 50, -1}, {"spiral", 50, -1}, {"crossing", 50, 6}};
+                 {"rectilinear", 50, -1}, {"spiral", 50, -1}, {"crossing", 50, 6},
+                 {"coastline", 50, -1}};
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         for (int64_t k = 0;; k++) {
             cr_assert(k < 1000, "%s: never succeeds", cases[c].family);
@@ -674,6 +677,99 @@ Test(generators, holes_large_smoke) {
                      R.err.msg);
         check_split(P, 100000, Hs[h]);
         wk_polygon_free(&R, P);
+    }
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+/* ---- the coastline family ---- */
+
+/* The stated range of the coastline's reflex count: within 1.5 sqrt(n) + 4
+** of n/2 (about five standard deviations of the fair coins of the motifs;
+** the k0 <= 7 convex corners of the coarse polygon are inside the 4). */
+static void check_coastline_r(const wk_polygon *P, uint64_t seed) {
+    double n = P->n, dev = fabs((double)P->r - n / 2);
+    cr_assert(dev <= 1.5 * sqrt(n) + 4, "coastline n=%u seed=%llu: r=%u, |r - n/2| = %g > %g",
+              P->n, (unsigned long long)seed, P->r, dev, 1.5 * sqrt(n) + 4);
+}
+
+Test(generators, coastline_every_small_n) {
+    wk_run R;
+    wk_run_init(&R);
+    for (uint32_t n = 3; n <= 600; n++)
+        for (uint64_t seed = 1; seed <= 3; seed++) {
+            wk_polygon *P = NULL;
+            cr_assert_eq(gen(&R, "coastline", n, -1, seed, NULL, &P), WK_OK,
+                         "coastline n=%u seed=%llu: %s", n, (unsigned long long)seed, R.err.msg);
+            check_polygon("coastline", n, -1, seed, P);
+            if (n >= 16) check_coastline_r(P, seed);
+            wk_polygon_free(&R, P);
+        }
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+/* A seed whose coarse polygon has k0 vertices: the family's first draw
+** is k0 = 4 + below(4) from the geometry stream (stream 1). */
+static uint64_t coastline_seed_for(uint32_t k0) {
+    for (uint64_t seed = 1;; seed++) {
+        wk_rng g;
+        wk_rng_seed(&g, seed, 1);
+        if (4 + wk_rng_below(&g, 4) == k0) return seed;
+    }
+}
+
+/* Around the sizes where a full Koch level begins (n = k0 4^L, k0 = 4..7:
+** the partial level is empty, or one edge gets a 2-child motif, or all but
+** one get 4), up to 114688 (bench/README.md reports the same up to 2 * 10^6),
+** and the large sizes the benchmarks use. */
+Test(generators, coastline_level_boundaries_and_large_n) {
+    wk_run R;
+    wk_run_init(&R);
+    uint32_t top = quick() ? 20000 : 120000;
+    for (uint32_t k0 = 4; k0 <= 7; k0++) {
+        uint64_t seed = coastline_seed_for(k0);
+        for (uint32_t b = k0 * 4; b <= top; b *= 4)
+            for (uint32_t n = b - 1; n <= b + 1; n++) {
+                wk_polygon *P = NULL;
+                cr_assert_eq(gen(&R, "coastline", n, -1, seed, NULL, &P), WK_OK,
+                             "coastline n=%u seed=%llu: %s", n, (unsigned long long)seed,
+                             R.err.msg);
+                cr_assert_eq(P->n, n);
+                cr_assert(!P->reversed);
+                check_coastline_r(P, seed);
+                wk_polygon_free(&R, P);
+            }
+    }
+    static const uint32_t big[] = {100000, 1000000, 2000000};
+    for (size_t i = 0; i < (quick() ? 1 : 3); i++) {
+        wk_polygon *P = NULL;
+        cr_assert_eq(gen(&R, "coastline", big[i], -1, 1, NULL, &P), WK_OK, "n=%u: %s", big[i],
+                     R.err.msg);
+        cr_assert_eq(P->n, big[i]);
+        check_coastline_r(P, 1);
+        wk_polygon_free(&R, P);
+    }
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+Test(generators, coastline_deterministic) {
+    wk_run R;
+    wk_run_init(&R);
+    static const uint32_t ns[] = {16, 257, 5000, 100000};
+    for (size_t i = 0; i < 4; i++) {
+        uint32_t n = ns[i];
+        wk_polygon *A = NULL, *B = NULL, *C = NULL, *W = NULL;
+        cr_assert_eq(gen(&R, "coastline", n, -1, 9, NULL, &A), WK_OK, "%s", R.err.msg);
+        cr_assert_eq(gen(&R, "coastline", n, -1, 9, NULL, &B), WK_OK, "%s", R.err.msg);
+        cr_assert_eq(gen(&R, "coastline", n, -1, 10, NULL, &C), WK_OK, "%s", R.err.msg);
+        cr_assert_eq(gen(&R, "coastline", n, -1, 9, "two", &W), WK_OK, "%s", R.err.msg);
+        cr_assert(!memcmp(A->p, B->p, n * sizeof *A->p), "coastline n=%u: rerun differs", n);
+        cr_assert_eq(A->r, B->r);
+        cr_assert(memcmp(A->p, C->p, n * sizeof *A->p) != 0, "coastline n=%u: seeds agree", n);
+        cr_assert(!memcmp(A->p, W->p, n * sizeof *A->p), "coastline n=%u: weights moved it", n);
+        wk_polygon_free(&R, A);
+        wk_polygon_free(&R, B);
+        wk_polygon_free(&R, C);
+        wk_polygon_free(&R, W);
     }
     ASSERT_CLEAN_CLOSE(R);
 }

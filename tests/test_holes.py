@@ -141,6 +141,16 @@ def check_case(path, tally, known=None):
             tally.skip("%s: %s" % (name, problems[0]), kind="known arrangement failures")
     else:
         fails.extend("%s: %s" % (name, p) for p in problems)
+    # the motorcycle variant: equal weights only (it refuses the others)
+    rc, out, err = tl.run([tl.WSKEL, "--variant", "motorcycle", "--check", path])
+    if rc == 2 and "unit weights only" in err:
+        tally.skip("%s: motorcycle refuses weights" % name, kind="weighted (motorcycle refuses)")
+    elif rc != 0:
+        fails.append("%s: motorcycle exit %s: %s" % (name, rc, err.strip()[:160]))
+    else:
+        ok, why = tl.same_skeleton(a, tl.json.loads(out))
+        if not ok:
+            fails.append("%s: motorcycle differs from naive: %s" % (name, why[:200]))
     rc, _, err = tl.run([tl.WSKEL, "--variant", "monotone", path])
     if rc != 2 or "does not apply to polygons with holes" not in err:
         fails.append("%s: monotone did not refuse a polygon with holes (exit %s: %s)"

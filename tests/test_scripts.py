@@ -7,7 +7,10 @@
   - plot.py writes its PNGs from a CSV and a fit.json, draws the model of
     the fit.json (not a refit), and leaves absent counters out;
   - regress.py passes identical runs and fails on a changed counter, where
-    an empty cell equals only an empty cell.
+    an empty cell equals only an empty cell;
+  - large_report.py (scripts/perf_large.sh's report): the exponent, time /
+    qsort and bytes per vertex at 10^6 of rows made with known values, and
+    the verdicts against the targets, "not measured" below 10^6.
 No binary is needed.  Prints a line per test and 'N passed, N failed'; exits
 1 on any failure.  usage: /usr/bin/python3 tests/test_scripts.py
 """
@@ -105,6 +108,23 @@ def test_loader_comments_and_types():
     assert n["n"] == 100 and n["r_req"] == -1 and n["k"] == "" and a["k"] == "max"
     assert isinstance(n["wall_s"], float) and n["signal"] is None and n["message"] == ""
     assert list(n)[:9] == list(results.CONFIG_COLS), list(n)
+
+
+def test_qsort_reference_from_comments():
+    path = write_csv("qsort.csv", [make_row("naive", "star", 100)],
+                     comments=("date: 2026-01-01",
+                               "qsort_ref_s: 0.08 (before the runs; qsort() of 1000000 doubles)",
+                               "qsort_ref_s: 0.1 (after the runs; ...)"))
+    comments, rows = results.load_csv(path)
+    assert len(rows) == 1
+    assert abs(results.qsort_ref(comments) - 0.09) < 1e-12, results.qsort_ref(comments)
+    assert results.qsort_ref(comments + ["qsort_ref_s: 0.5 (resumed)"]) == 0.1
+    assert results.qsort_ref(["date: 2026-01-01"]) is None
+    try:
+        results.qsort_ref(["qsort_ref_s: soon"])
+        raise AssertionError("a malformed line was accepted")
+    except ValueError:
+        pass
 
 
 def test_loader_empty_counters_are_none():
@@ -340,6 +360,46 @@ def test_regress_counter_columns_by_name():
     old = [dict(r, stale_events=0) for r in rows]
     rc, text = regress(old, rows, base_counters=COUNTERS + ["stale_events"])
     assert rc == 1 and "only in the baseline: stale_events" in text, text
+
+
+# ---------------------------------------------------------------- large_report.py
+
+def test_large_report_exponent_ratio_and_verdicts():
+    q = 0.1
+    rows = []
+    for n in (1000, 10000, 100000, 1000000):
+        # fast: time 20 qsorts at 10^6, exponent 1.1, 500 bytes per vertex
+        r = make_row("fast", "coastline", n, wall=20 * q * (n / 1e6) ** 1.1)
+        r["peak_tracked_bytes"] = 500 * n
+        rows.append(r)
+        if n <= 100000:  # slow: quadratic, capped at 10^5
+            rows.append(make_row("slow", "coastline", n, wall=1e-7 * n * n))
+    rows.append(dict(make_row("slow", "star", 1000), status="timeout", wall_s=None,
+                     message="time limit 5s exceeded during construction"))
+    path = write_csv("large.csv", rows, comments=(
+        "date: 2026-01-01", "cpu: test", "qsort_ref_s: %r (before the runs; ...)" % q,
+        "qsort_ref_s: %r (after the runs; ...)" % q))
+    out = os.path.join(TMP, "large")
+    rc, text = run("large_report.py", path, out, "--command", "perf_large.sh fast slow")
+    assert rc == 0, text
+    with open(os.path.join(out, "summary.csv")) as f:
+        summ = {(r["variant"], r["family"]): r for r in csv.DictReader(f)}
+    fast = summ[("fast", "coastline")]
+    assert abs(float(fast["exponent"]) - 1.1) < 1e-3, fast
+    assert abs(float(fast["time_over_qsort_1e6"]) - 20) < 1e-3, fast
+    assert float(fast["bytes_per_vertex_1e6"]) == 500.0, fast
+    assert (fast["meets_time"], fast["meets_memory"], fast["meets_exponent"]) == (
+        "meets", "meets", "meets"), fast
+    slow = summ[("slow", "coastline")]
+    assert abs(float(slow["exponent"]) - 2) < 1e-3 and slow["max_n_ok"] == "100000", slow
+    assert slow["meets_time"] == "not measured" and slow["meets_memory"] == "not measured"
+    assert slow["meets_exponent"] == "misses (fit below 10^6 only)", slow
+    star = summ[("slow", "star")]
+    assert star["status_n1000"] == "timeout" and star["exponent"] == "", star
+    assert star["meets_exponent"] == "not measured" and star["max_n_ok"] == "", star
+    report = open(os.path.join(out, "REPORT.md")).read()
+    assert "median **0.1 s**" in report and "| fast | coastline | 1000000 |" in report, report
+    assert "timeout (time limit 5s exceeded" in report, report
 
 
 def main():

@@ -11,11 +11,13 @@
 extern const wk_variant wk_variant_naive;
 extern const wk_variant wk_variant_monotone;
 extern const wk_variant wk_variant_arrangement;
+extern const wk_variant wk_variant_motorcycle;
 
 static const wk_variant *const registry[] = {
     &wk_variant_naive,
     &wk_variant_monotone,
     &wk_variant_arrangement,
+    &wk_variant_motorcycle,
     NULL,
 };
 

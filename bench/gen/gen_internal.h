@@ -37,6 +37,8 @@ wk_status wk_gen_monotone(wk_run *R, const wk_gen_params *g, wk_rng *rng, double
                           int64_t *r_out);
 wk_status wk_gen_random(wk_run *R, const wk_gen_params *g, wk_rng *rng, double *x, double *y,
                         int64_t *r_out);
+wk_status wk_gen_coastline(wk_run *R, const wk_gen_params *g, wk_rng *rng, double *x, double *y,
+                           int64_t *r_out);
 
 /* A family with holes fills the rings one after the other (outer ring
 ** counter-clockwise, then each hole clockwise) and their sizes into

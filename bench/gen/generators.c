@@ -49,11 +49,13 @@ static const family families[] = {
      "points on a random ellipse; r = 0; --holes H: convex windows, r = hole vertices"},
     {"holes", NULL, wk_gen_holes,
      "--holes H star/convex holes in a star/convex outer ring; n >= 3H+3, holes get max(3H,n/2)"},
+    {"coastline", wk_gen_coastline, NULL,
+     "random Koch-like fractal curve closed over a k-gon, simple by construction; r about n/2"},
 };
 
 const char *const wk_gen_families[] = {
     "star", "comb", "spiral", "notched", "crossing", "random", "monotone", "rectilinear", "convex",
-    "holes", NULL,
+    "holes", "coastline", NULL,
 };
 
 _Static_assert(sizeof families / sizeof families[0] ==

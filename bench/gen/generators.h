@@ -20,7 +20,7 @@ typedef enum wk_weight_mode {
 
 typedef struct wk_gen_params {
     const char *family; /* star comb spiral notched crossing random monotone rectilinear convex
-                           holes */
+                           holes coastline */
     uint32_t n;         /* vertices, over all rings */
     uint32_t holes;     /* holes wanted (default 0); only the families for which
                            wk_gen_family_takes_holes is true take holes > 0 */

@@ -12,7 +12,8 @@ every variant (bin/wskel --check, a time limit per run):
 
   naive                 must pass --check (exit 1: the maker made an invalid
                         polygon: dropped and counted, not a failure)
-  arrangement --k 1, arrangement --k max, monotone
+  arrangement --k 1, arrangement --k max, monotone, motorcycle (equal
+  weights only: its refusal of other weights is n/a)
                         must pass --check and be naive's skeleton
                         (testlib.same_skeleton: 1e-7 of the diagonal, times
                         over the smallest weight); monotone's refusal "not
@@ -72,12 +73,14 @@ KNOWN_FILE = os.path.join(KNOWN_DIR, "KNOWN")
 VARIANTS = [("naive", ["--variant", "naive"]),
             ("arrangement-k1", ["--variant", "arrangement", "--k", "1"]),
             ("arrangement-kmax", ["--variant", "arrangement", "--k", "max"]),
-            ("monotone", ["--variant", "monotone"])]
+            ("monotone", ["--variant", "monotone"]),
+            ("motorcycle", ["--variant", "motorcycle"])]
 VARIANT_ARGS = dict(VARIANTS)
 OUTCOMES = ["pass", "exit2", "exit3", "differs", "timeout", "crash", "refused", "other", "n/a",
             "unref"]
 FAILURES = {"exit2", "exit3", "differs", "timeout", "crash", "refused", "other"}
 NOT_MONOTONE = "not monotone in any direction"
+UNIT_ONLY = "supports unit weights only"
 
 # Set in each worker by init_worker.
 CFG = {}
@@ -150,6 +153,8 @@ def evaluate(poly, monotone, work):
                     oc, msg = "differs", "cannot compare with naive: %r" % e
         elif rc == 2 and name == "monotone" and NOT_MONOTONE in msg:
             oc = "refused" if monotone else "n/a"
+        elif rc == 2 and name == "motorcycle" and UNIT_ONLY in msg:
+            oc = "n/a"  # the motorcycle variant takes equal weights only
         elif rc == 2:
             oc = "exit2"
         elif rc == 3:
