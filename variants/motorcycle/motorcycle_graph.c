@@ -388,6 +388,10 @@ static wk_status process_registration(sim *S, uint32_t i) {
             wk_point x;
             S->pairs++;
             if (!meet(S, a, b, &da, &db, &x) || cell_of(S, x) != cell) continue;
+            /* j crashed before x (for good: a crash length is final) makes
+            ** the event a no-op whenever it comes (BEFORE, or a crashed
+            ** loser): not pushed. */
+            if (S->crashed[j] && S->m[j].len < (j == a ? da : db) - S->eps_d) continue;
             if (heap_push(S->R, &S->H, (mev){event_time(S, a, b, da, db), a, b}) != WK_OK)
                 return WK_ENOMEM;
         }
