@@ -99,9 +99,18 @@ typedef struct sim_group {
     uint32_t on_edge, on_vertex;
 } sim_group;
 
-typedef struct cell_entry {
-    uint32_t id, next;
-} cell_entry;
+/* What a crossing needs of a motorcycle (meet), copied into every cell it
+** lists itself in, so that a cell's scan reads one contiguous array. */
+typedef struct geo {
+    wk_point o, u;
+    double wall_len;
+    uint32_t id;
+} geo;
+
+typedef struct cell_list {
+    geo *e;
+    uint32_t n, cap;
+} cell_list;
 
 typedef struct sim {
     wk_run *R;
@@ -119,9 +128,8 @@ typedef struct sim {
     bool grid;
     double g0[2], cw[2], delta;
     uint32_t nc[2];        /* columns, rows */
-    uint32_t *head;        /* nc[0] * nc[1]: first entry or WK_NONE */
-    cell_entry *pool;
-    uint32_t n_pool, cap_pool;
+    cell_list *cells;      /* nc[0] * nc[1]: the motorcycles listed there */
+    uint64_t n_listed;
     uint32_t *slab;        /* r: next slab along the major axis */
     uint32_t *slab_end;    /* r: last slab (inclusive) */
 } sim;
@@ -133,8 +141,14 @@ static inline double tau(const wk_motorcycle *m, double d) { return wk_motorcycl
 /* Where motorcycles i < j meet (see the header's candidates): distances
 ** *di, *dj clamped to [0, wall_len], the point *x.  A function of (i, j)
 ** and the motorcycles' start data alone. */
-static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, wk_point *x) {
-    const wk_motorcycle *a = &S->m[i], *b = &S->m[j];
+static inline geo geo_of(const sim *S, uint32_t i) {
+    const wk_motorcycle *m = &S->m[i];
+    return (geo){m->o, m->u, m->wall_len, i};
+}
+
+/* The same from the copies a (of the smaller id) and b. */
+static bool meet_geo(const sim *S, const geo *a, const geo *b, double *di, double *dj,
+                     wk_point *x) {
     double eps = S->eps_d;
     double dx = b->o.x - a->o.x, dy = b->o.y - a->o.y;
     double cr = a->u.x * b->u.y - a->u.y * b->u.x;
@@ -164,8 +178,9 @@ static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, w
         } else {
             if (p <= 0) return false; /* moving apart */
             /* Head-on: the point both reach at the same time. */
-            bool ia = a->speed == INFINITY, ib = b->speed == INFINITY;
-            s = ia && ib ? 0.5 * p : ia ? p : ib ? 0.0 : p * (a->speed / (a->speed + b->speed));
+            double sa = S->m[a->id].speed, sb = S->m[b->id].speed;
+            bool ia = sa == INFINITY, ib = sb == INFINITY;
+            s = ia && ib ? 0.5 * p : ia ? p : ib ? 0.0 : p * (sa / (sa + sb));
             t = p - s;
             *x = (wk_point){a->o.x + s * a->u.x, a->o.y + s * a->u.y};
         }
@@ -174,6 +189,11 @@ static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, w
     *di = s < 0 ? 0 : s > a->wall_len ? a->wall_len : s;
     *dj = t < 0 ? 0 : t > b->wall_len ? b->wall_len : t;
     return true;
+}
+
+static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, wk_point *x) {
+    geo a = geo_of(S, i), b = geo_of(S, j);
+    return meet_geo(S, &a, &b, di, dj, x);
 }
 
 static inline double event_time(const sim *S, uint32_t i, uint32_t j, double di, double dj) {
@@ -380,14 +400,19 @@ static wk_status process_registration(sim *S, uint32_t i) {
     double p0 = oq + d0 * uq, p1 = oq + d1 * uq;
     uint32_t c0 = grid_index(S, q, (p0 < p1 ? p0 : p1) - S->delta);
     uint32_t c1 = grid_index(S, q, (p0 < p1 ? p1 : p0) + S->delta);
+    geo gi = geo_of(S, i);
     for (uint32_t c = c0; c <= c1; c++) {
         uint32_t cell = k == 0 ? c * S->nc[0] + s : s * S->nc[0] + c;
-        for (uint32_t e = S->head[cell]; e != WK_NONE; e = S->pool[e].next) {
-            uint32_t j = S->pool[e].id, a = i < j ? i : j, b = i < j ? j : i;
+        cell_list *L = &S->cells[cell];
+        S->pairs += L->n;
+        for (uint32_t e = 0; e < L->n; e++) {
+            const geo *gj = &L->e[e];
+            uint32_t j = gj->id, a = i < j ? i : j, b = i < j ? j : i;
             double da, db;
             wk_point x;
-            S->pairs++;
-            if (!meet(S, a, b, &da, &db, &x) || cell_of(S, x) != cell) continue;
+            if (!(i < j ? meet_geo(S, &gi, gj, &da, &db, &x) : meet_geo(S, gj, &gi, &da, &db, &x)) ||
+                cell_of(S, x) != cell)
+                continue;
             /* j crashed before x (for good: a crash length is final) makes
             ** the event a no-op whenever it comes (BEFORE, or a crashed
             ** loser): not pushed. */
@@ -395,11 +420,18 @@ static wk_status process_registration(sim *S, uint32_t i) {
             if (heap_push(S->R, &S->H, (mev){event_time(S, a, b, da, db), a, b}) != WK_OK)
                 return WK_ENOMEM;
         }
-        if (S->n_pool == UINT32_MAX - 1)
-            return WK_FAIL(S->R, WK_ENOMEM, NULL, 0, "too many grid entries");
-        if (WK_GROW(S->R, S->pool, S->cap_pool, S->n_pool + 1) != WK_OK) return WK_ENOMEM;
-        S->pool[S->n_pool] = (cell_entry){i, S->head[cell]};
-        S->head[cell] = S->n_pool++;
+        if (L->n == L->cap) {
+            /* Doubling from 2 (most cells list a few motorcycles). */
+            if (L->cap >= UINT32_MAX / 2)
+                return WK_FAIL(S->R, WK_ENOMEM, NULL, 0, "too many motorcycles in a cell");
+            uint32_t cap = L->cap ? 2 * L->cap : 2;
+            geo *e = wk_realloc(S->R, L->e, (size_t)L->cap * sizeof *e, (size_t)cap * sizeof *e);
+            if (!e) return WK_ENOMEM;
+            L->e = e;
+            L->cap = cap;
+        }
+        L->e[L->n++] = gi;
+        S->n_listed++;
     }
     if (s == S->slab_end[i]) return WK_OK;
     int u_sign = (k == 0 ? m->u.x : m->u.y) > 0 ? 1 : -1;
@@ -427,11 +459,11 @@ static wk_status grid_start(sim *S, wk_point lo, wk_point hi) {
     S->cw[0] = W / S->nc[0];
     S->cw[1] = H / S->nc[1];
     uint32_t cells = S->nc[0] * S->nc[1];
-    S->head = WK_NEW_ARRAY(S->R, uint32_t, cells);
+    S->cells = WK_NEW_ARRAY(S->R, cell_list, cells);
     S->slab = WK_NEW_ARRAY(S->R, uint32_t, S->r);
     S->slab_end = WK_NEW_ARRAY(S->R, uint32_t, S->r);
-    if (!S->head || !S->slab || !S->slab_end) return WK_ENOMEM;
-    for (uint32_t c = 0; c < cells; c++) S->head[c] = WK_NONE;
+    if (!S->cells || !S->slab || !S->slab_end) return WK_ENOMEM;
+    for (uint32_t c = 0; c < cells; c++) S->cells[c] = (cell_list){NULL, 0, 0};
     for (uint32_t i = 0; i < S->r; i++) {
         const wk_motorcycle *m = &S->m[i];
         int k = major_axis(m);
@@ -475,8 +507,11 @@ static void sim_clear(sim *S) {
     WK_FREE_ARRAY(R, S->next_member, S->r);
     WK_FREE_ARRAY(R, S->groups, S->cap_groups);
     WK_FREE_ARRAY(R, S->H.e, S->H.cap);
-    WK_FREE_ARRAY(R, S->head, (size_t)S->nc[0] * S->nc[1]);
-    WK_FREE_ARRAY(R, S->pool, S->cap_pool);
+    if (S->cells) {
+        size_t cells = (size_t)S->nc[0] * S->nc[1];
+        for (size_t c = 0; c < cells; c++) WK_FREE_ARRAY(R, S->cells[c].e, S->cells[c].cap);
+        WK_FREE_ARRAY(R, S->cells, cells);
+    }
     WK_FREE_ARRAY(R, S->slab, S->r);
     WK_FREE_ARRAY(R, S->slab_end, S->r);
 }
