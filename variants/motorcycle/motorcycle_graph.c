@@ -35,6 +35,12 @@
 ** cells, more listings per trace).  1 keeps both O(1) per cell crossed for
 ** traces spread over the polygon. */
 #define MCG_CELLS_PER_MOTORCYCLE 1.0
+/* A cell listing this many motorcycles gets an index of their lines (and
+** a new one each time the count doubles).  Not a tolerance: below it a
+** scan of the cell's array is as cheap. */
+#define MCG_INDEX_MIN 64u
+#define MCG_PI 3.14159265358979323846
+#define MCG_PI_2 1.57079632679489661923
 
 /* ================================================================ events */
 
@@ -107,9 +113,27 @@ typedef struct geo {
     uint32_t id;
 } geo;
 
+/* A crowded cell's index of its lines by direction and offset (see
+** cell_scan): line k of the cell has canonical direction angle th[k] in
+** [0, pi) and signed offset h[k] of the cell's centre from it; bucket
+** (b, c) chains the lines of angle bin b (bmin[b] .. bmax[b] their actual
+** angles) and offset bin c through next[]. */
+typedef struct cell_index {
+    uint32_t gt, gh, built; /* bins in angle and offset; lines when built */
+    uint32_t cap;           /* of th, h, next */
+    double th0, dth;        /* angle bins: th0 + [b, b + 1) dth, clamped */
+    double cx, cy, rho;     /* the cell's centre and the radius of its disk */
+    double *bmin, *bmax;    /* gt */
+    double *trig;           /* 4 gt: cos, sin of bmin and bmax */
+    uint32_t *head;         /* gt * gh */
+    double *th, *h;         /* cap */
+    uint32_t *next;         /* cap */
+} cell_index;
+
 typedef struct cell_list {
     geo *e;
     uint32_t n, cap;
+    cell_index *ix; /* NULL below MCG_INDEX_MIN lines and in the outer cells */
 } cell_list;
 
 typedef struct sim {
@@ -387,6 +411,206 @@ static wk_status push_registration(sim *S, uint32_t i) {
     return heap_push(S->R, &S->H, (mev){tau(&S->m[i], d0), i, WK_NONE});
 }
 
+/* The pair of i (copy gi) and the listed copy gj, tested in cell `cell`:
+** its event is pushed when the crossing lies in the cell. */
+static wk_status test_pair(sim *S, const geo *gi, const geo *gj, uint32_t cell) {
+    uint32_t i = gi->id, j = gj->id, a = i < j ? i : j, b = i < j ? j : i;
+    double da, db;
+    wk_point x;
+    S->pairs++;
+    if (!(i < j ? meet_geo(S, gi, gj, &da, &db, &x) : meet_geo(S, gj, gi, &da, &db, &x)) ||
+        cell_of(S, x) != cell)
+        return WK_OK;
+    /* j crashed before x (for good: a crash length is final) makes the
+    ** event a no-op whenever it comes (BEFORE, or a crashed loser): not
+    ** pushed. */
+    if (S->crashed[j] && S->m[j].len < (j == a ? da : db) - S->eps_d) return WK_OK;
+    return heap_push(S->R, &S->H, (mev){event_time(S, a, b, da, db), a, b});
+}
+
+/* Canonical angle in [0, pi) of g's line and the signed offset of (cx, cy)
+** from it (flipped with the direction). */
+static inline void line_key(const geo *g, double cx, double cy, double *th, double *h) {
+    double t = atan2(g->u.y, g->u.x);
+    double o = g->u.x * (cy - g->o.y) - g->u.y * (cx - g->o.x);
+    if (t < 0) {
+        t += MCG_PI;
+        o = -o;
+    }
+    if (t >= MCG_PI) { /* the direction of angle 0 is the flipped one */
+        t = 0.0;
+        o = -o;
+    }
+    *th = t;
+    *h = o;
+}
+
+static inline uint32_t bin_of(double v, double v0, double w, uint32_t n) {
+    double f = (v - v0) / w;
+    if (!(f >= 0.0)) return 0;
+    if (f >= (double)n) return n - 1;
+    return (uint32_t)f;
+}
+
+static void index_free(wk_run *R, cell_index *X) {
+    if (!X) return;
+    WK_FREE_ARRAY(R, X->bmin, X->gt);
+    WK_FREE_ARRAY(R, X->bmax, X->gt);
+    WK_FREE_ARRAY(R, X->trig, (size_t)4 * X->gt);
+    WK_FREE_ARRAY(R, X->head, (size_t)X->gt * X->gh);
+    WK_FREE_ARRAY(R, X->th, X->cap);
+    WK_FREE_ARRAY(R, X->h, X->cap);
+    WK_FREE_ARRAY(R, X->next, X->cap);
+    WK_FREE_ARRAY(R, X, 1);
+}
+
+/* Line k of L (already in L->e) into L's index. */
+static wk_status index_add(sim *S, cell_list *L, uint32_t k) {
+    cell_index *X = L->ix;
+    if (k >= X->cap) {
+        uint32_t cap = 2 * X->cap;
+        double *th = wk_realloc(S->R, X->th, (size_t)X->cap * sizeof *th, (size_t)cap * sizeof *th);
+        if (!th) return WK_ENOMEM;
+        X->th = th;
+        double *h = wk_realloc(S->R, X->h, (size_t)X->cap * sizeof *h, (size_t)cap * sizeof *h);
+        if (!h) return WK_ENOMEM;
+        X->h = h;
+        uint32_t *nx =
+            wk_realloc(S->R, X->next, (size_t)X->cap * sizeof *nx, (size_t)cap * sizeof *nx);
+        if (!nx) return WK_ENOMEM;
+        X->next = nx;
+        X->cap = cap;
+    }
+    double th, h;
+    line_key(&L->e[k], X->cx, X->cy, &th, &h);
+    uint32_t b = bin_of(th, X->th0, X->dth, X->gt);
+    uint32_t c = bin_of(h, -X->rho, 2.0 * X->rho / X->gh, X->gh);
+    X->th[k] = th;
+    X->h[k] = h;
+    X->next[k] = X->head[b * X->gh + c];
+    X->head[b * X->gh + c] = k;
+    if (th < X->bmin[b]) {
+        X->bmin[b] = th;
+        X->trig[4 * b] = cos(th);
+        X->trig[4 * b + 1] = sin(th);
+    }
+    if (th > X->bmax[b]) {
+        X->bmax[b] = th;
+        X->trig[4 * b + 2] = cos(th);
+        X->trig[4 * b + 3] = sin(th);
+    }
+    return WK_OK;
+}
+
+/* A new index of L's lines (replacing the old), over their angle range;
+** none for the outer cells, whose crossings may lie outside the grid's
+** box (grid_index clamps). */
+static wk_status index_build(sim *S, cell_list *L, uint32_t cell) {
+    uint32_t cx = cell % S->nc[0], cy = cell / S->nc[0];
+    if (cx == 0 || cy == 0 || cx + 1 >= S->nc[0] || cy + 1 >= S->nc[1]) return WK_OK;
+    index_free(S->R, L->ix);
+    L->ix = NULL;
+    cell_index *X = WK_NEW_ARRAY(S->R, cell_index, 1);
+    if (!X) return WK_ENOMEM;
+    L->ix = X;
+    uint32_t g = (uint32_t)ceil(sqrt((double)L->n));
+    X->gt = g;
+    X->gh = 4 * g;
+    X->built = L->n;
+    X->cap = L->cap;
+    X->cx = S->g0[0] + ((double)cx + 0.5) * S->cw[0];
+    X->cy = S->g0[1] + ((double)cy + 0.5) * S->cw[1];
+    X->rho = 0.5 * hypot(S->cw[0], S->cw[1]);
+    X->bmin = WK_NEW_ARRAY(S->R, double, X->gt);
+    X->bmax = WK_NEW_ARRAY(S->R, double, X->gt);
+    X->trig = WK_NEW_ARRAY(S->R, double, (size_t)4 * X->gt);
+    X->head = WK_NEW_ARRAY(S->R, uint32_t, (size_t)X->gt * X->gh);
+    X->th = WK_NEW_ARRAY(S->R, double, X->cap);
+    X->h = WK_NEW_ARRAY(S->R, double, X->cap);
+    X->next = WK_NEW_ARRAY(S->R, uint32_t, X->cap);
+    if (!X->bmin || !X->bmax || !X->trig || !X->head || !X->th || !X->h || !X->next) return WK_ENOMEM;
+    double lo = INFINITY, hi = -INFINITY;
+    for (uint32_t k = 0; k < L->n; k++) {
+        double th, h;
+        line_key(&L->e[k], X->cx, X->cy, &th, &h);
+        lo = th < lo ? th : lo;
+        hi = th > hi ? th : hi;
+    }
+    X->th0 = lo;
+    X->dth = hi > lo ? (hi - lo) / X->gt : 1.0;
+    for (uint32_t b = 0; b < X->gt; b++) {
+        X->bmin[b] = INFINITY;
+        X->bmax[b] = -INFINITY;
+    }
+    for (size_t q = 0; q < (size_t)X->gt * X->gh; q++) X->head[q] = WK_NONE;
+    for (uint32_t k = 0; k < L->n; k++)
+        if (index_add(S, L, k) != WK_OK) return WK_ENOMEM;
+    return WK_OK;
+}
+
+/* Test gi against every motorcycle listed in L (cell `cell`), or, when L
+** is indexed, against those whose line can cross gi's line in the cell's
+** disk (centre C, radius rho; it holds the cell): with canonical angles
+** (difference D = th_j - th_i) and offsets h of C, two lines cross at
+** distance r from C only if |h_i - h_j cos D| <= r |sin D|.  So an angle
+** bin whose D range [bmin - th_i, bmax - th_i] misses +-pi/2 (cos of one
+** sign, between cmin and cmax, |sin| at most smax) holds candidates only
+** with h_j cos D in h_i -+ (rho smax + sigma): the offset bins of h_j
+** between the four quotients.  sigma (1e-9 of the box, plus 4 eps_d)
+** covers the rounding of the computed crossing (about 1e-16 of the box
+** over |sin D|: 1e-16 of the box on this scale) and of the keys; skipped
+** pairs cannot have their computed crossing in the cell, so they are
+** pairs the full scan would not push. */
+static wk_status cell_scan(sim *S, cell_list *L, uint32_t cell, const geo *gi) {
+    cell_index *X = L->ix;
+    if (!X) {
+        for (uint32_t e = 0; e < L->n; e++)
+            if (test_pair(S, gi, &L->e[e], cell) != WK_OK) return WK_ENOMEM;
+        return WK_OK;
+    }
+    double ext = fmax(fabs(S->g0[0]), fabs(S->g0[1])) + hypot(S->cw[0] * S->nc[0], S->cw[1] * S->nc[1]);
+    double sigma = 1e-9 * ext + 4.0 * S->eps_d;
+    double thi, hi_;
+    line_key(gi, X->cx, X->cy, &thi, &hi_);
+    double ci = cos(thi), si = sin(thi);
+    double hw = 2.0 * X->rho / X->gh;
+    for (uint32_t b = 0; b < X->gt; b++) {
+        if (!(X->bmin[b] <= X->bmax[b])) continue;
+        double D0 = X->bmin[b] - thi, D1 = X->bmax[b] - thi;
+        uint32_t c0 = 0, c1 = X->gh - 1;
+        bool full = (D0 <= MCG_PI_2 && D1 >= MCG_PI_2) || (D0 <= -MCG_PI_2 && D1 >= -MCG_PI_2);
+        if (!full) {
+            /* cos, sin of D0 and D1 from those of the bin's bounds (a few
+            ** ulps: far below sigma's share). */
+            const double *tg = X->trig + 4 * b;
+            double cs0 = tg[0] * ci + tg[1] * si, cs1 = tg[2] * ci + tg[3] * si;
+            double sn0 = tg[1] * ci - tg[0] * si, sn1 = tg[3] * ci - tg[2] * si;
+            double cmin = cs0 < cs1 ? cs0 : cs1, cmax = cs0 < cs1 ? cs1 : cs0;
+            if (D0 <= 0 && D1 >= 0) cmax = 1.0;
+            double smax = fmax(fabs(sn0), fabs(sn1));
+            if (fmin(fabs(cmin), fabs(cmax)) < 1e-3 || (cmin < 0) != (cmax < 0)) {
+                full = true;
+            } else {
+                double lo = hi_ - X->rho * smax - sigma, hi = hi_ + X->rho * smax + sigma;
+                double q[4] = {lo / cmin, lo / cmax, hi / cmin, hi / cmax};
+                double wlo = q[0], whi = q[0];
+                for (int t = 1; t < 4; t++) {
+                    wlo = q[t] < wlo ? q[t] : wlo;
+                    whi = q[t] > whi ? q[t] : whi;
+                }
+                wlo -= sigma;
+                whi += sigma;
+                c0 = bin_of(wlo, -X->rho, hw, X->gh);
+                c1 = bin_of(whi, -X->rho, hw, X->gh);
+            }
+        }
+        for (uint32_t c = c0; c <= c1; c++)
+            for (uint32_t k = X->head[b * X->gh + c]; k != WK_NONE; k = X->next[k])
+                if (test_pair(S, gi, &L->e[k], cell) != WK_OK) return WK_ENOMEM;
+    }
+    return WK_OK;
+}
+
 /* Motorcycle i lists itself in the cells of its current slab, testing the
 ** motorcycles already listed there, then queues its next slab. */
 static wk_status process_registration(sim *S, uint32_t i) {
@@ -404,22 +628,7 @@ static wk_status process_registration(sim *S, uint32_t i) {
     for (uint32_t c = c0; c <= c1; c++) {
         uint32_t cell = k == 0 ? c * S->nc[0] + s : s * S->nc[0] + c;
         cell_list *L = &S->cells[cell];
-        S->pairs += L->n;
-        for (uint32_t e = 0; e < L->n; e++) {
-            const geo *gj = &L->e[e];
-            uint32_t j = gj->id, a = i < j ? i : j, b = i < j ? j : i;
-            double da, db;
-            wk_point x;
-            if (!(i < j ? meet_geo(S, &gi, gj, &da, &db, &x) : meet_geo(S, gj, &gi, &da, &db, &x)) ||
-                cell_of(S, x) != cell)
-                continue;
-            /* j crashed before x (for good: a crash length is final) makes
-            ** the event a no-op whenever it comes (BEFORE, or a crashed
-            ** loser): not pushed. */
-            if (S->crashed[j] && S->m[j].len < (j == a ? da : db) - S->eps_d) continue;
-            if (heap_push(S->R, &S->H, (mev){event_time(S, a, b, da, db), a, b}) != WK_OK)
-                return WK_ENOMEM;
-        }
+        if (cell_scan(S, L, cell, &gi) != WK_OK) return WK_ENOMEM;
         if (L->n == L->cap) {
             /* Doubling from 2 (most cells list a few motorcycles). */
             if (L->cap >= UINT32_MAX / 2)
@@ -432,6 +641,10 @@ static wk_status process_registration(sim *S, uint32_t i) {
         }
         L->e[L->n++] = gi;
         S->n_listed++;
+        if (L->ix && index_add(S, L, L->n - 1) != WK_OK) return WK_ENOMEM;
+        if (L->n >= MCG_INDEX_MIN && L->n >= 2 * (L->ix ? L->ix->built : 0) &&
+            index_build(S, L, cell) != WK_OK)
+            return WK_ENOMEM;
     }
     if (s == S->slab_end[i]) return WK_OK;
     int u_sign = (k == 0 ? m->u.x : m->u.y) > 0 ? 1 : -1;
@@ -463,7 +676,7 @@ static wk_status grid_start(sim *S, wk_point lo, wk_point hi) {
     S->slab = WK_NEW_ARRAY(S->R, uint32_t, S->r);
     S->slab_end = WK_NEW_ARRAY(S->R, uint32_t, S->r);
     if (!S->cells || !S->slab || !S->slab_end) return WK_ENOMEM;
-    for (uint32_t c = 0; c < cells; c++) S->cells[c] = (cell_list){NULL, 0, 0};
+    for (uint32_t c = 0; c < cells; c++) S->cells[c] = (cell_list){NULL, 0, 0, NULL};
     for (uint32_t i = 0; i < S->r; i++) {
         const wk_motorcycle *m = &S->m[i];
         int k = major_axis(m);
@@ -509,7 +722,10 @@ static void sim_clear(sim *S) {
     WK_FREE_ARRAY(R, S->H.e, S->H.cap);
     if (S->cells) {
         size_t cells = (size_t)S->nc[0] * S->nc[1];
-        for (size_t c = 0; c < cells; c++) WK_FREE_ARRAY(R, S->cells[c].e, S->cells[c].cap);
+        for (size_t c = 0; c < cells; c++) {
+            WK_FREE_ARRAY(R, S->cells[c].e, S->cells[c].cap);
+            index_free(R, S->cells[c].ix);
+        }
         WK_FREE_ARRAY(R, S->cells, cells);
     }
     WK_FREE_ARRAY(R, S->slab, S->r);
