@@ -114,20 +114,22 @@ typedef struct geo {
 } geo;
 
 /* A crowded cell's index of its lines by direction and offset (see
-** cell_scan): line k of the cell has canonical direction angle th[k] in
-** [0, pi) and signed offset h[k] of the cell's centre from it; bucket
-** (b, c) chains the lines of angle bin b (bmin[b] .. bmax[b] their actual
-** angles) and offset bin c through next[]. */
+** cell_scan and line_key): bucket (b, c) chains, through line[].next, the
+** lines of canonical angle bin b (bmin[b] .. bmax[b] their actual angles)
+** and offset bin c. */
+typedef struct ix_line {
+    uint32_t next;
+} ix_line;
+
 typedef struct cell_index {
     uint32_t gt, gh, built; /* bins in angle and offset; lines when built */
-    uint32_t cap;           /* of th, h, next */
+    uint32_t cap;           /* of line */
     double th0, dth;        /* angle bins: th0 + [b, b + 1) dth, clamped */
     double cx, cy, rho;     /* the cell's centre and the radius of its disk */
     double *bmin, *bmax;    /* gt */
     double *trig;           /* 4 gt: cos, sin of bmin and bmax */
     uint32_t *head;         /* gt * gh */
-    double *th, *h;         /* cap */
-    uint32_t *next;         /* cap */
+    ix_line *line;          /* cap */
 } cell_index;
 
 typedef struct cell_list {
@@ -458,9 +460,7 @@ static void index_free(wk_run *R, cell_index *X) {
     WK_FREE_ARRAY(R, X->bmax, X->gt);
     WK_FREE_ARRAY(R, X->trig, (size_t)4 * X->gt);
     WK_FREE_ARRAY(R, X->head, (size_t)X->gt * X->gh);
-    WK_FREE_ARRAY(R, X->th, X->cap);
-    WK_FREE_ARRAY(R, X->h, X->cap);
-    WK_FREE_ARRAY(R, X->next, X->cap);
+    WK_FREE_ARRAY(R, X->line, X->cap);
     WK_FREE_ARRAY(R, X, 1);
 }
 
@@ -468,26 +468,17 @@ static void index_free(wk_run *R, cell_index *X) {
 static wk_status index_add(sim *S, cell_list *L, uint32_t k) {
     cell_index *X = L->ix;
     if (k >= X->cap) {
-        uint32_t cap = 2 * X->cap;
-        double *th = wk_realloc(S->R, X->th, (size_t)X->cap * sizeof *th, (size_t)cap * sizeof *th);
-        if (!th) return WK_ENOMEM;
-        X->th = th;
-        double *h = wk_realloc(S->R, X->h, (size_t)X->cap * sizeof *h, (size_t)cap * sizeof *h);
-        if (!h) return WK_ENOMEM;
-        X->h = h;
-        uint32_t *nx =
-            wk_realloc(S->R, X->next, (size_t)X->cap * sizeof *nx, (size_t)cap * sizeof *nx);
-        if (!nx) return WK_ENOMEM;
-        X->next = nx;
+        uint32_t cap = L->cap; /* > k, a power of 2 below UINT32_MAX / 2 */
+        ix_line *l = wk_realloc(S->R, X->line, (size_t)X->cap * sizeof *l, (size_t)cap * sizeof *l);
+        if (!l) return WK_ENOMEM;
+        X->line = l;
         X->cap = cap;
     }
     double th, h;
     line_key(&L->e[k], X->cx, X->cy, &th, &h);
     uint32_t b = bin_of(th, X->th0, X->dth, X->gt);
     uint32_t c = bin_of(h, -X->rho, 2.0 * X->rho / X->gh, X->gh);
-    X->th[k] = th;
-    X->h[k] = h;
-    X->next[k] = X->head[b * X->gh + c];
+    X->line[k] = (ix_line){X->head[b * X->gh + c]};
     X->head[b * X->gh + c] = k;
     if (th < X->bmin[b]) {
         X->bmin[b] = th;
@@ -525,10 +516,8 @@ static wk_status index_build(sim *S, cell_list *L, uint32_t cell) {
     X->bmax = WK_NEW_ARRAY(S->R, double, X->gt);
     X->trig = WK_NEW_ARRAY(S->R, double, (size_t)4 * X->gt);
     X->head = WK_NEW_ARRAY(S->R, uint32_t, (size_t)X->gt * X->gh);
-    X->th = WK_NEW_ARRAY(S->R, double, X->cap);
-    X->h = WK_NEW_ARRAY(S->R, double, X->cap);
-    X->next = WK_NEW_ARRAY(S->R, uint32_t, X->cap);
-    if (!X->bmin || !X->bmax || !X->trig || !X->head || !X->th || !X->h || !X->next) return WK_ENOMEM;
+    X->line = WK_NEW_ARRAY(S->R, ix_line, X->cap);
+    if (!X->bmin || !X->bmax || !X->trig || !X->head || !X->line) return WK_ENOMEM;
     double lo = INFINITY, hi = -INFINITY;
     for (uint32_t k = 0; k < L->n; k++) {
         double th, h;
@@ -605,7 +594,7 @@ static wk_status cell_scan(sim *S, cell_list *L, uint32_t cell, const geo *gi) {
             }
         }
         for (uint32_t c = c0; c <= c1; c++)
-            for (uint32_t k = X->head[b * X->gh + c]; k != WK_NONE; k = X->next[k])
+            for (uint32_t k = X->head[b * X->gh + c]; k != WK_NONE; k = X->line[k].next)
                 if (test_pair(S, gi, &L->e[k], cell) != WK_OK) return WK_ENOMEM;
     }
     return WK_OK;
