@@ -557,7 +557,8 @@ static wk_status cell_scan(sim *S, cell_list *L, uint32_t cell, const geo *gi) {
             if (test_pair(S, gi, &L->e[e], cell) != WK_OK) return WK_ENOMEM;
         return WK_OK;
     }
-    double ext = fmax(fabs(S->g0[0]), fabs(S->g0[1])) + hypot(S->cw[0] * S->nc[0], S->cw[1] * S->nc[1]);
+    double ext = fmax(fabs(S->g0[0]), fabs(S->g0[1])) +
+                 hypot(S->cw[0] * S->nc[0], S->cw[1] * S->nc[1]);
     double sigma = 1e-9 * ext + 4.0 * S->eps_d;
     double thi, hi_;
     line_key(gi, X->cx, X->cy, &thi, &hi_);
