@@ -89,10 +89,10 @@
 ** as a crash length is final).  A pair that meets at x is listed in x's
 ** cell by both before the event's time (the listing runs at least 3 eps_d
 ** ahead of any crash that could matter there), so no valid event is
-** missed.  A cell keeps its motorcycles in one array holding the data a
-** crossing needs (no pointer chasing); once it lists 64 or more (and again
-** each time that count doubles; not in the outer cells, where grid_index
-** clamps) it also indexes their lines by canonical angle th in [0, pi) and
+** missed.  A cell keeps its motorcycles' ids in one array (the data a
+** crossing needs in one compact array by id); once it lists 64 or more
+** (and again each time that count doubles; not in the outer cells, where
+** grid_index clamps) it also indexes their lines by canonical angle th in [0, pi) and
 ** signed offset h of the cell's centre C (about sqrt(k) angle bins by
 ** 4 sqrt(k) offset bins), and a new motorcycle tests only the lines that
 ** can cross its own in the cell's disk (C, rho): two lines meet at
