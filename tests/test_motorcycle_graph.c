@@ -365,3 +365,40 @@ Test(motorcycle_graph, every_allocation_failure_is_clean) {
         ASSERT_CLEAN_CLOSE(R);
     }
 }
+
+/* The same for a star whose hub cells get the line index (64 or more
+** motorcycles in a cell): every 1/400th allocation call fails in turn. */
+Test(motorcycle_graph, allocation_failures_with_cell_index_are_clean, .timeout = 300) {
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = NULL;
+    cr_assert_eq(gen(&R, "star", 3000, -1, 1, NULL, &P), WK_OK);
+    size_t base = R.alloc.live;
+    uint64_t c0 = R.alloc.calls;
+    wk_motorcycle_graph *G = NULL;
+    cr_assert_eq(wk_motorcycle_graph_build(&R, P, &G), WK_OK);
+    int64_t calls = (int64_t)(R.alloc.calls - c0);
+    wk_motorcycle_graph_free(&R, G);
+    cr_assert_eq(R.alloc.live, base);
+    int64_t step = calls / 400 > 1 ? calls / 400 : 1;
+    int failures = 0;
+    for (int64_t N = 0; N < calls; N += step) {
+        R.err.code = WK_OK;
+        R.alloc.fail_after = (int64_t)R.alloc.calls + N;
+        G = NULL;
+        wk_status st = wk_motorcycle_graph_build(&R, P, &G);
+        R.alloc.fail_after = -1;
+        if (st == WK_OK) {
+            wk_motorcycle_graph_free(&R, G);
+        } else {
+            cr_assert_null(G);
+            cr_assert_eq(st, WK_ENOMEM, "N=%lld: status %d (%s)", (long long)N, st, R.err.msg);
+            failures++;
+        }
+        cr_assert_eq(R.alloc.live, base, "N=%lld: %zu bytes leaked", (long long)N,
+                     R.alloc.live - base);
+    }
+    cr_assert_gt(failures, 100);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}

@@ -35,6 +35,12 @@
 ** cells, more listings per trace).  1 keeps both O(1) per cell crossed for
 ** traces spread over the polygon. */
 #define MCG_CELLS_PER_MOTORCYCLE 1.0
+/* A cell listing this many motorcycles gets an index of their lines (and
+** a new one each time the count doubles).  Not a tolerance: below it a
+** scan of the cell's array is as cheap. */
+#define MCG_INDEX_MIN 64u
+#define MCG_PI 3.14159265358979323846
+#define MCG_PI_2 1.57079632679489661923
 
 /* ================================================================ events */
 
@@ -99,9 +105,38 @@ typedef struct sim_group {
     uint32_t on_edge, on_vertex;
 } sim_group;
 
-typedef struct cell_entry {
-    uint32_t id, next;
-} cell_entry;
+/* What a crossing needs of a motorcycle (meet): one compact array by id,
+** read by the cell scans (40 bytes a motorcycle instead of m[]'s 88). */
+typedef struct geo {
+    wk_point o, u;
+    double wall_len;
+    uint32_t id;
+} geo;
+
+/* A crowded cell's index of its lines by direction and offset (see
+** cell_scan and line_key): bucket (b, c) chains, through line[].next, the
+** lines of canonical angle bin b (bmin[b] .. bmax[b] their actual angles)
+** and offset bin c. */
+typedef struct ix_line {
+    uint32_t next;
+} ix_line;
+
+typedef struct cell_index {
+    uint32_t gt, gh, built; /* bins in angle and offset; lines when built */
+    uint32_t cap;           /* of line */
+    double th0, dth;        /* angle bins: th0 + [b, b + 1) dth, clamped */
+    double cx, cy, rho;     /* the cell's centre and the radius of its disk */
+    double *bmin, *bmax;    /* gt */
+    double *trig;           /* 4 gt: cos, sin of bmin and bmax */
+    uint32_t *head;         /* gt * gh */
+    ix_line *line;          /* cap */
+} cell_index;
+
+typedef struct cell_list {
+    uint32_t *e; /* ids */
+    uint32_t n, cap;
+    cell_index *ix; /* NULL below MCG_INDEX_MIN lines and in the outer cells */
+} cell_list;
 
 typedef struct sim {
     wk_run *R;
@@ -119,9 +154,9 @@ typedef struct sim {
     bool grid;
     double g0[2], cw[2], delta;
     uint32_t nc[2];        /* columns, rows */
-    uint32_t *head;        /* nc[0] * nc[1]: first entry or WK_NONE */
-    cell_entry *pool;
-    uint32_t n_pool, cap_pool;
+    cell_list *cells;      /* nc[0] * nc[1]: the motorcycles listed there */
+    geo *geo;              /* r */
+    uint64_t n_listed;
     uint32_t *slab;        /* r: next slab along the major axis */
     uint32_t *slab_end;    /* r: last slab (inclusive) */
 } sim;
@@ -133,8 +168,14 @@ static inline double tau(const wk_motorcycle *m, double d) { return wk_motorcycl
 /* Where motorcycles i < j meet (see the header's candidates): distances
 ** *di, *dj clamped to [0, wall_len], the point *x.  A function of (i, j)
 ** and the motorcycles' start data alone. */
-static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, wk_point *x) {
-    const wk_motorcycle *a = &S->m[i], *b = &S->m[j];
+static inline geo geo_of(const sim *S, uint32_t i) {
+    const wk_motorcycle *m = &S->m[i];
+    return (geo){m->o, m->u, m->wall_len, i};
+}
+
+/* The same from the copies a (of the smaller id) and b. */
+static bool meet_geo(const sim *S, const geo *a, const geo *b, double *di, double *dj,
+                     wk_point *x) {
     double eps = S->eps_d;
     double dx = b->o.x - a->o.x, dy = b->o.y - a->o.y;
     double cr = a->u.x * b->u.y - a->u.y * b->u.x;
@@ -164,8 +205,9 @@ static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, w
         } else {
             if (p <= 0) return false; /* moving apart */
             /* Head-on: the point both reach at the same time. */
-            bool ia = a->speed == INFINITY, ib = b->speed == INFINITY;
-            s = ia && ib ? 0.5 * p : ia ? p : ib ? 0.0 : p * (a->speed / (a->speed + b->speed));
+            double sa = S->m[a->id].speed, sb = S->m[b->id].speed;
+            bool ia = sa == INFINITY, ib = sb == INFINITY;
+            s = ia && ib ? 0.5 * p : ia ? p : ib ? 0.0 : p * (sa / (sa + sb));
             t = p - s;
             *x = (wk_point){a->o.x + s * a->u.x, a->o.y + s * a->u.y};
         }
@@ -174,6 +216,11 @@ static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, w
     *di = s < 0 ? 0 : s > a->wall_len ? a->wall_len : s;
     *dj = t < 0 ? 0 : t > b->wall_len ? b->wall_len : t;
     return true;
+}
+
+static bool meet(const sim *S, uint32_t i, uint32_t j, double *di, double *dj, wk_point *x) {
+    geo a = geo_of(S, i), b = geo_of(S, j);
+    return meet_geo(S, &a, &b, di, dj, x);
 }
 
 static inline double event_time(const sim *S, uint32_t i, uint32_t j, double di, double dj) {
@@ -367,6 +414,194 @@ static wk_status push_registration(sim *S, uint32_t i) {
     return heap_push(S->R, &S->H, (mev){tau(&S->m[i], d0), i, WK_NONE});
 }
 
+/* The pair of i (copy gi) and the listed copy gj, tested in cell `cell`:
+** its event is pushed when the crossing lies in the cell. */
+static wk_status test_pair(sim *S, const geo *gi, const geo *gj, uint32_t cell) {
+    uint32_t i = gi->id, j = gj->id, a = i < j ? i : j, b = i < j ? j : i;
+    double da, db;
+    wk_point x;
+    S->pairs++;
+    if (!(i < j ? meet_geo(S, gi, gj, &da, &db, &x) : meet_geo(S, gj, gi, &da, &db, &x)) ||
+        cell_of(S, x) != cell)
+        return WK_OK;
+    /* j crashed before x (for good: a crash length is final) makes the
+    ** event a no-op whenever it comes (BEFORE, or a crashed loser): not
+    ** pushed. */
+    if (S->crashed[j] && S->m[j].len < (j == a ? da : db) - S->eps_d) return WK_OK;
+    return heap_push(S->R, &S->H, (mev){event_time(S, a, b, da, db), a, b});
+}
+
+/* Canonical angle in [0, pi) of g's line and the signed offset of (cx, cy)
+** from it (flipped with the direction). */
+static inline void line_key(const geo *g, double cx, double cy, double *th, double *h) {
+    double t = atan2(g->u.y, g->u.x);
+    double o = g->u.x * (cy - g->o.y) - g->u.y * (cx - g->o.x);
+    if (t < 0) {
+        t += MCG_PI;
+        o = -o;
+    }
+    if (t >= MCG_PI) { /* the direction of angle 0 is the flipped one */
+        t = 0.0;
+        o = -o;
+    }
+    *th = t;
+    *h = o;
+}
+
+static inline uint32_t bin_of(double v, double v0, double w, uint32_t n) {
+    double f = (v - v0) / w;
+    if (!(f >= 0.0)) return 0;
+    if (f >= (double)n) return n - 1;
+    return (uint32_t)f;
+}
+
+static void index_free(wk_run *R, cell_index *X) {
+    if (!X) return;
+    WK_FREE_ARRAY(R, X->bmin, X->gt);
+    WK_FREE_ARRAY(R, X->bmax, X->gt);
+    WK_FREE_ARRAY(R, X->trig, (size_t)4 * X->gt);
+    WK_FREE_ARRAY(R, X->head, (size_t)X->gt * X->gh);
+    WK_FREE_ARRAY(R, X->line, X->cap);
+    WK_FREE_ARRAY(R, X, 1);
+}
+
+/* Line k of L (already in L->e) into L's index. */
+static wk_status index_add(sim *S, cell_list *L, uint32_t k) {
+    cell_index *X = L->ix;
+    if (k >= X->cap) {
+        uint32_t cap = L->cap; /* > k, a power of 2 below UINT32_MAX / 2 */
+        ix_line *l = wk_realloc(S->R, X->line, (size_t)X->cap * sizeof *l, (size_t)cap * sizeof *l);
+        if (!l) return WK_ENOMEM;
+        X->line = l;
+        X->cap = cap;
+    }
+    double th, h;
+    line_key(&S->geo[L->e[k]], X->cx, X->cy, &th, &h);
+    uint32_t b = bin_of(th, X->th0, X->dth, X->gt);
+    uint32_t c = bin_of(h, -X->rho, 2.0 * X->rho / X->gh, X->gh);
+    X->line[k] = (ix_line){X->head[b * X->gh + c]};
+    X->head[b * X->gh + c] = k;
+    if (th < X->bmin[b]) {
+        X->bmin[b] = th;
+        X->trig[4 * b] = cos(th);
+        X->trig[4 * b + 1] = sin(th);
+    }
+    if (th > X->bmax[b]) {
+        X->bmax[b] = th;
+        X->trig[4 * b + 2] = cos(th);
+        X->trig[4 * b + 3] = sin(th);
+    }
+    return WK_OK;
+}
+
+/* A new index of L's lines (replacing the old), over their angle range;
+** none for the outer cells, whose crossings may lie outside the grid's
+** box (grid_index clamps). */
+static wk_status index_build(sim *S, cell_list *L, uint32_t cell) {
+    uint32_t cx = cell % S->nc[0], cy = cell / S->nc[0];
+    if (cx == 0 || cy == 0 || cx + 1 >= S->nc[0] || cy + 1 >= S->nc[1]) return WK_OK;
+    index_free(S->R, L->ix);
+    L->ix = NULL;
+    cell_index *X = WK_NEW_ARRAY(S->R, cell_index, 1);
+    if (!X) return WK_ENOMEM;
+    L->ix = X;
+    uint32_t g = (uint32_t)ceil(sqrt((double)L->n));
+    X->gt = g;
+    X->gh = 4 * g;
+    X->built = L->n;
+    X->cap = L->cap;
+    X->cx = S->g0[0] + ((double)cx + 0.5) * S->cw[0];
+    X->cy = S->g0[1] + ((double)cy + 0.5) * S->cw[1];
+    X->rho = 0.5 * hypot(S->cw[0], S->cw[1]);
+    X->bmin = WK_NEW_ARRAY(S->R, double, X->gt);
+    X->bmax = WK_NEW_ARRAY(S->R, double, X->gt);
+    X->trig = WK_NEW_ARRAY(S->R, double, (size_t)4 * X->gt);
+    X->head = WK_NEW_ARRAY(S->R, uint32_t, (size_t)X->gt * X->gh);
+    X->line = WK_NEW_ARRAY(S->R, ix_line, X->cap);
+    if (!X->bmin || !X->bmax || !X->trig || !X->head || !X->line) return WK_ENOMEM;
+    double lo = INFINITY, hi = -INFINITY;
+    for (uint32_t k = 0; k < L->n; k++) {
+        double th, h;
+        line_key(&S->geo[L->e[k]], X->cx, X->cy, &th, &h);
+        lo = th < lo ? th : lo;
+        hi = th > hi ? th : hi;
+    }
+    X->th0 = lo;
+    X->dth = hi > lo ? (hi - lo) / X->gt : 1.0;
+    for (uint32_t b = 0; b < X->gt; b++) {
+        X->bmin[b] = INFINITY;
+        X->bmax[b] = -INFINITY;
+    }
+    for (size_t q = 0; q < (size_t)X->gt * X->gh; q++) X->head[q] = WK_NONE;
+    for (uint32_t k = 0; k < L->n; k++)
+        if (index_add(S, L, k) != WK_OK) return WK_ENOMEM;
+    return WK_OK;
+}
+
+/* Test gi against every motorcycle listed in L (cell `cell`), or, when L
+** is indexed, against those whose line can cross gi's line in the cell's
+** disk (centre C, radius rho; it holds the cell): with canonical angles
+** (difference D = th_j - th_i) and offsets h of C, two lines cross at
+** distance r from C only if |h_i - h_j cos D| <= r |sin D|.  So an angle
+** bin whose D range [bmin - th_i, bmax - th_i] misses +-pi/2 (cos of one
+** sign, between cmin and cmax, |sin| at most smax) holds candidates only
+** with h_j cos D in h_i -+ (rho smax + sigma): the offset bins of h_j
+** between the four quotients.  sigma (1e-9 of the box, plus 4 eps_d)
+** covers the rounding of the computed crossing (about 1e-16 of the box
+** over |sin D|: 1e-16 of the box on this scale) and of the keys; skipped
+** pairs cannot have their computed crossing in the cell, so they are
+** pairs the full scan would not push. */
+static wk_status cell_scan(sim *S, cell_list *L, uint32_t cell, const geo *gi) {
+    cell_index *X = L->ix;
+    if (!X) {
+        for (uint32_t e = 0; e < L->n; e++)
+            if (test_pair(S, gi, &S->geo[L->e[e]], cell) != WK_OK) return WK_ENOMEM;
+        return WK_OK;
+    }
+    double ext = fmax(fabs(S->g0[0]), fabs(S->g0[1])) +
+                 hypot(S->cw[0] * S->nc[0], S->cw[1] * S->nc[1]);
+    double sigma = 1e-9 * ext + 4.0 * S->eps_d;
+    double thi, hi_;
+    line_key(gi, X->cx, X->cy, &thi, &hi_);
+    double ci = cos(thi), si = sin(thi);
+    double hw = 2.0 * X->rho / X->gh;
+    for (uint32_t b = 0; b < X->gt; b++) {
+        if (!(X->bmin[b] <= X->bmax[b])) continue;
+        double D0 = X->bmin[b] - thi, D1 = X->bmax[b] - thi;
+        uint32_t c0 = 0, c1 = X->gh - 1;
+        bool full = (D0 <= MCG_PI_2 && D1 >= MCG_PI_2) || (D0 <= -MCG_PI_2 && D1 >= -MCG_PI_2);
+        if (!full) {
+            /* cos, sin of D0 and D1 from those of the bin's bounds (a few
+            ** ulps: far below sigma's share). */
+            const double *tg = X->trig + 4 * b;
+            double cs0 = tg[0] * ci + tg[1] * si, cs1 = tg[2] * ci + tg[3] * si;
+            double sn0 = tg[1] * ci - tg[0] * si, sn1 = tg[3] * ci - tg[2] * si;
+            double cmin = cs0 < cs1 ? cs0 : cs1, cmax = cs0 < cs1 ? cs1 : cs0;
+            if (D0 <= 0 && D1 >= 0) cmax = 1.0;
+            double smax = fmax(fabs(sn0), fabs(sn1));
+            if (fmin(fabs(cmin), fabs(cmax)) < 1e-3 || (cmin < 0) != (cmax < 0)) {
+                full = true;
+            } else {
+                double lo = hi_ - X->rho * smax - sigma, hi = hi_ + X->rho * smax + sigma;
+                double q[4] = {lo / cmin, lo / cmax, hi / cmin, hi / cmax};
+                double wlo = q[0], whi = q[0];
+                for (int t = 1; t < 4; t++) {
+                    wlo = q[t] < wlo ? q[t] : wlo;
+                    whi = q[t] > whi ? q[t] : whi;
+                }
+                wlo -= sigma;
+                whi += sigma;
+                c0 = bin_of(wlo, -X->rho, hw, X->gh);
+                c1 = bin_of(whi, -X->rho, hw, X->gh);
+            }
+        }
+        for (uint32_t c = c0; c <= c1; c++)
+            for (uint32_t k = X->head[b * X->gh + c]; k != WK_NONE; k = X->line[k].next)
+                if (test_pair(S, gi, &S->geo[L->e[k]], cell) != WK_OK) return WK_ENOMEM;
+    }
+    return WK_OK;
+}
+
 /* Motorcycle i lists itself in the cells of its current slab, testing the
 ** motorcycles already listed there, then queues its next slab. */
 static wk_status process_registration(sim *S, uint32_t i) {
@@ -380,22 +615,28 @@ static wk_status process_registration(sim *S, uint32_t i) {
     double p0 = oq + d0 * uq, p1 = oq + d1 * uq;
     uint32_t c0 = grid_index(S, q, (p0 < p1 ? p0 : p1) - S->delta);
     uint32_t c1 = grid_index(S, q, (p0 < p1 ? p1 : p0) + S->delta);
+    const geo *gi = &S->geo[i];
     for (uint32_t c = c0; c <= c1; c++) {
         uint32_t cell = k == 0 ? c * S->nc[0] + s : s * S->nc[0] + c;
-        for (uint32_t e = S->head[cell]; e != WK_NONE; e = S->pool[e].next) {
-            uint32_t j = S->pool[e].id, a = i < j ? i : j, b = i < j ? j : i;
-            double da, db;
-            wk_point x;
-            S->pairs++;
-            if (!meet(S, a, b, &da, &db, &x) || cell_of(S, x) != cell) continue;
-            if (heap_push(S->R, &S->H, (mev){event_time(S, a, b, da, db), a, b}) != WK_OK)
-                return WK_ENOMEM;
+        cell_list *L = &S->cells[cell];
+        if (cell_scan(S, L, cell, gi) != WK_OK) return WK_ENOMEM;
+        if (L->n == L->cap) {
+            /* Doubling from 2 (most cells list a few motorcycles). */
+            if (L->cap >= UINT32_MAX / 2)
+                return WK_FAIL(S->R, WK_ENOMEM, NULL, 0, "too many motorcycles in a cell");
+            uint32_t cap = L->cap ? 2 * L->cap : 2;
+            uint32_t *e =
+                wk_realloc(S->R, L->e, (size_t)L->cap * sizeof *e, (size_t)cap * sizeof *e);
+            if (!e) return WK_ENOMEM;
+            L->e = e;
+            L->cap = cap;
         }
-        if (S->n_pool == UINT32_MAX - 1)
-            return WK_FAIL(S->R, WK_ENOMEM, NULL, 0, "too many grid entries");
-        if (WK_GROW(S->R, S->pool, S->cap_pool, S->n_pool + 1) != WK_OK) return WK_ENOMEM;
-        S->pool[S->n_pool] = (cell_entry){i, S->head[cell]};
-        S->head[cell] = S->n_pool++;
+        L->e[L->n++] = i;
+        S->n_listed++;
+        if (L->ix && index_add(S, L, L->n - 1) != WK_OK) return WK_ENOMEM;
+        if (L->n >= MCG_INDEX_MIN && L->n >= 2 * (L->ix ? L->ix->built : 0) &&
+            index_build(S, L, cell) != WK_OK)
+            return WK_ENOMEM;
     }
     if (s == S->slab_end[i]) return WK_OK;
     int u_sign = (k == 0 ? m->u.x : m->u.y) > 0 ? 1 : -1;
@@ -423,11 +664,13 @@ static wk_status grid_start(sim *S, wk_point lo, wk_point hi) {
     S->cw[0] = W / S->nc[0];
     S->cw[1] = H / S->nc[1];
     uint32_t cells = S->nc[0] * S->nc[1];
-    S->head = WK_NEW_ARRAY(S->R, uint32_t, cells);
+    S->cells = WK_NEW_ARRAY(S->R, cell_list, cells);
+    S->geo = WK_NEW_ARRAY(S->R, geo, S->r);
     S->slab = WK_NEW_ARRAY(S->R, uint32_t, S->r);
     S->slab_end = WK_NEW_ARRAY(S->R, uint32_t, S->r);
-    if (!S->head || !S->slab || !S->slab_end) return WK_ENOMEM;
-    for (uint32_t c = 0; c < cells; c++) S->head[c] = WK_NONE;
+    if (!S->cells || !S->geo || !S->slab || !S->slab_end) return WK_ENOMEM;
+    for (uint32_t i = 0; i < S->r; i++) S->geo[i] = geo_of(S, i);
+    for (uint32_t c = 0; c < cells; c++) S->cells[c] = (cell_list){NULL, 0, 0, NULL};
     for (uint32_t i = 0; i < S->r; i++) {
         const wk_motorcycle *m = &S->m[i];
         int k = major_axis(m);
@@ -471,8 +714,15 @@ static void sim_clear(sim *S) {
     WK_FREE_ARRAY(R, S->next_member, S->r);
     WK_FREE_ARRAY(R, S->groups, S->cap_groups);
     WK_FREE_ARRAY(R, S->H.e, S->H.cap);
-    WK_FREE_ARRAY(R, S->head, (size_t)S->nc[0] * S->nc[1]);
-    WK_FREE_ARRAY(R, S->pool, S->cap_pool);
+    if (S->cells) {
+        size_t cells = (size_t)S->nc[0] * S->nc[1];
+        for (size_t c = 0; c < cells; c++) {
+            WK_FREE_ARRAY(R, S->cells[c].e, S->cells[c].cap);
+            index_free(R, S->cells[c].ix);
+        }
+        WK_FREE_ARRAY(R, S->cells, cells);
+    }
+    WK_FREE_ARRAY(R, S->geo, S->r);
     WK_FREE_ARRAY(R, S->slab, S->r);
     WK_FREE_ARRAY(R, S->slab_end, S->r);
 }

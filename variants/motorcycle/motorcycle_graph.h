@@ -81,21 +81,42 @@
 ** WK_MCG_GRID_DELTA * eps_d of its bounding segment, slab by slab along the
 ** segment's major axis, each slab at the time it comes within that distance
 ** (a registration event in the same heap); a motorcycle that has crashed
-** lists itself no further.  On listing itself in a cell it tests every
-** motorcycle already there (candidate_pairs), and pushes the pair's event
-** when the crossing x lies in that cell (so each pair once).  A pair that
-** meets at x is listed in x's cell by both before the event's time (the
-** listing runs at least 3 eps_d ahead of any crash that could matter
-** there), so no valid event is missed.  O((n + M + K) log n) for M
-** cells crossed by the final traces (plus one slab each) and K pairs
-** sharing a cell: near n log n when traces are short against the cell
-** size (comb, rectilinear, spiral: 0.1 s at n = 10^5, 1 s at 10^6), but
-** quadratic when many long traces share cells: the star and random
-** families' needle notches send ~r/2 fast motorcycles radially into a hub
-** at the centre (K ~ r^2 / 8; 24 s at n = 10^5).  A quadtree refinement of
-** the grid does not help there (tried: the spokes are dense along their
-** whole length, so K stays ~ r^2 / 10 and the listings grow); that needs a
-** crossing query inside a cell (chords whose ends interleave), not done.
+** lists itself no further.  On listing itself in a cell it tests the
+** motorcycles already there (candidate_pairs counts the crossings
+** computed), and pushes the pair's event when the crossing x lies in that
+** cell (so each pair once), unless the listed one has already crashed
+** before x (len < d - eps_d: the event would be a no-op whenever it came,
+** as a crash length is final).  A pair that meets at x is listed in x's
+** cell by both before the event's time (the listing runs at least 3 eps_d
+** ahead of any crash that could matter there), so no valid event is
+** missed.  A cell keeps its motorcycles' ids in one array (the data a
+** crossing needs in one compact array by id); once it lists 64 or more
+** (and again each time that count doubles; not in the outer cells, where
+** grid_index clamps) it also indexes their lines by canonical angle th in [0, pi) and
+** signed offset h of the cell's centre C (about sqrt(k) angle bins by
+** 4 sqrt(k) offset bins), and a new motorcycle tests only the lines that
+** can cross its own in the cell's disk (C, rho): two lines meet at
+** distance r from C only if |h_i - h_j cos D| <= r |sin D| (D = th_j -
+** th_i), so an angle bin whose D range misses +-pi/2 is searched only over
+** the offset bins that the four bounds of h_j allow, widened by sigma =
+** 1e-9 of the box + 4 eps_d (far above the rounding of a computed crossing
+** times |sin D|, ~1e-16 of the box).  That skips the near-parallel spokes
+** that share the cells of a hub without crossing there, and only those:
+** every pair whose computed crossing lies in the cell is still tested.
+** Cost O((n + M + K) log n) for M cells crossed by the final traces (plus
+** one slab each) and K pairs tested: near n log n when traces are short
+** against the cell size (comb, rectilinear, spiral: 0.1 s at n = 10^5, 1 s
+** at 10^6).  The star and random families' needle notches send ~r/2 fast
+** motorcycles radially into a hub at the centre; without the index K ~
+** r^2 / 8 (star n = 10^5: 194M pairs, 20 s), with it K ~ r^1.5 (43M, 4.6 s
+** of which 1.3 s is the ray shooting).  What remains are crossings in the
+** hub's central cells, where lines of all directions meet, with the
+** extensions (to the cell's edge) of traces that crashed inside the cell:
+** of star n = 10^5's 19.6M line-in-disk pairs only 0.8M meet a trace
+** before its crash point.  Removing them needs the crashed traces clipped
+** inside the cell (a finer subdivision of the crowded cells, each indexed
+** as above: a quadtree alone does not help, tried, as the spokes are
+** dense along their whole length), not done.
 ** wk_motorcycle_graph_build_brute tests all pairs up front.
 */
 #ifndef WK_MOTORCYCLE_GRAPH_H
