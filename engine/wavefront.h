@@ -116,5 +116,39 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a);
 void wk_wf_split_offer(wk_wavefront *W, const wk_wf_split_search *s);
 /* The search over every piece of v's cycle, O(cycle): begin, test all, offer. */
 void wk_wf_split_scan(wk_wavefront *W, uint32_t v);
+/* The search over the pieces just beyond v's own two, walking on past each
+** neighbour within WK_ARR_NEAR_SLACK * eps_d of v: across a sub-tolerance
+** edge v is that close to its neighbour's other piece, a contact the
+** reference takes as a split at once and that no ray along v's motion sees.
+** O(1) unless v sits in a chain of such edges. */
+void wk_wf_near_split(wk_wavefront *W, uint32_t v);
+
+/* ------------------------------------- rays along a segment (wavefront_ray.c)
+** For finders that follow a moving Steiner vertex along a static segment
+** o + lambda u (u a unit vector, relative coordinates): 000's segments,
+** 002's traces. */
+
+/* lambda where the segment's line meets offset line L at time t; NaN if
+** they are parallel (|n . u| < WK_ARR_PARALLEL). */
+double wk_wf_ray_on_line(wk_point o, wk_point u, const wk_offset_line *L, double t);
+/* lambda where the ray (lambda > lambda0) meets piece a -> next(a) at time
+** t, or INFINITY; *mu receives the place along the piece (0 .. 1, within
+** WK_RAY_PIECE_SLACK). */
+double wk_wf_ray_hit_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32_t a, double t,
+                           double lambda0, double *mu);
+/* The first piece the ray (lambda > lambda0) meets at time t: over v's
+** cycle, O(cycle), or over every alive piece with holes or v = WK_NONE (a
+** hole's cycle may not have joined v's yet).  A hit at a piece's end
+** (within WK_RAY_END_SNAP) is shot again WK_RAY_RESHOOT_DELAY * eps_t
+** later, when the vertex there has moved off the ray.  v's own two pieces
+** are never hit.  WK_NONE if the ray meets nothing. */
+uint32_t wk_wf_ray_shoot(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, double t,
+                         double lambda0);
+/* When the moving Steiner vertex at lambda l0 (at now) and l1 (at now + 1)
+** on piece a -> next(a) leaves the piece over one of its ends: *te
+** (INFINITY if never: it rides along with an end vertex, within
+** WK_RIDE_ALONG_REL) and *end (0 over a, 1 over next(a)). */
+void wk_wf_ray_exit(const wk_wavefront *W, wk_point o, wk_point u, uint32_t a, double now,
+                    double l0, double l1, double *te, uint8_t *end);
 
 #endif

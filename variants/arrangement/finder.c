@@ -92,9 +92,7 @@ typedef struct ar_state {
 /* lambda at which s meets the offset line of edge e at time t; NaN if
 ** parallel. */
 static double lambda_on_line(const ar_seg *S, const wk_offset_line *L, double t) {
-    double den = L->nx * S->u.x + L->ny * S->u.y;
-    if (fabs(den) < WK_ARR_PARALLEL) return NAN;
-    return (L->c + L->w * t - (L->nx * S->o.x + L->ny * S->o.y)) / den;
+    return wk_wf_ray_on_line(S->o, S->u, L, t);
 }
 
 static double lambda_of(const ar_seg *S, wk_point p) {
@@ -156,68 +154,15 @@ static void link_f(ar_state *A, wk_wavefront *W, uint32_t si, uint32_t a) {
     A->fhead[a] = si;
 }
 
-/* Where the ray o + lambda u (lambda > lambda0) meets piece a -> a.next at
-** time t: lambda, or INFINITY; *mu: the position along the piece (0..1). */
 static double hit_piece(const wk_wavefront *W, const ar_seg *S, uint32_t a, double t,
                         double lambda0, double *mu) {
-    uint32_t b = wk_wf_next(W, a);
-    wk_point pa = wk_wf_position(W, a, t), pb = wk_wf_position(W, b, t);
-    double dx = pb.x - pa.x, dy = pb.y - pa.y;
-    double den = S->u.x * dy - S->u.y * dx;
-    if (fabs(den) < WK_DIV_GUARD) return INFINITY;
-    double ex = pa.x - S->o.x, ey = pa.y - S->o.y;
-    double lam = (ex * dy - ey * dx) / den;
-    *mu = (ex * S->u.y - ey * S->u.x) / den;
-    if (*mu < -WK_RAY_PIECE_SLACK || *mu > 1 + WK_RAY_PIECE_SLACK ||
-        lam <= lambda0 + wk_wf_eps_d(W) * WK_RAY_AHEAD_REL)
-        return INFINITY;
-    return lam;
+    return wk_wf_ray_hit_piece(W, S->o, S->u, a, t, lambda0, mu);
 }
 
-static void shoot_piece(const wk_wavefront *W, const ar_seg *S, uint32_t v, uint32_t a, double t,
-                        double lambda0, uint32_t *best, double *bl, bool *at_end) {
-    double mu;
-    if (a == v || wk_wf_next(W, a) == v) return; /* v's own pieces */
-    double lam = hit_piece(W, S, a, t, lambda0, &mu);
-    if (lam < *bl) {
-        *bl = lam;
-        *best = a;
-        *at_end = mu < WK_RAY_END_SNAP || mu > 1 - WK_RAY_END_SNAP;
-    }
-}
-
-/* The first piece that the ray o + lambda u (lambda > lambda0) meets at
-** time t: a static ray shot over v's cycle, O(cycle), or, for a polygon
-** with holes, over every alive piece (the first piece along s may belong to
-** a hole's cycle that has not joined v's yet).  *at_end is set when the hit
-** is (within rounding) an end vertex of that piece. */
-static uint32_t shoot_at(const wk_wavefront *W, const ar_seg *S, uint32_t v, double t,
-                         double lambda0, bool *at_end) {
-    uint32_t best = WK_NONE;
-    double bl = INFINITY;
-    if (wk_wf_polygon(W)->n_rings == 1) {
-        for (uint32_t a = wk_wf_next(W, v); a != v; a = wk_wf_next(W, a))
-            shoot_piece(W, S, v, a, t, lambda0, &best, &bl, at_end);
-    } else {
-        for (uint32_t a = 0; a < wk_wf_vertex_count(W); a++)
-            if (wk_wf_alive(W, a)) shoot_piece(W, S, v, a, t, lambda0, &best, &bl, at_end);
-    }
-    return best;
-}
-
-/* The piece F is on just after time t.  A hit at a vertex is ambiguous (s
-** passes through a wavefront vertex right now: F may go on along either
-** piece or jump further), so the ray is shot again a moment later, when the
-** vertex has moved off s. */
+/* The piece F is on just after time t: the engine's ray shot over v's
+** cycle (every alive piece with holes), O(cycle). */
 static uint32_t shoot(const wk_wavefront *W, const ar_seg *S, uint32_t v, double t, double lambda0) {
-    bool at_end = false;
-    uint32_t a = shoot_at(W, S, v, t, lambda0, &at_end);
-    if (a != WK_NONE && at_end) {
-        double later = t + WK_RAY_RESHOOT_DELAY * wk_wf_eps_t(W);
-        uint32_t b = shoot_at(W, S, v, later, lambda_of(S, wk_wf_position(W, v, later)), &at_end);
-        if (b != WK_NONE) a = b;
-    }
-    return a;
+    return wk_wf_ray_shoot(W, S->o, S->u, v, t, lambda0);
 }
 
 /* --------------------------------------------------------------- events */
@@ -235,26 +180,10 @@ static void seg_event(ar_state *A, wk_wavefront *W, uint32_t si) {
         /* F on the piece's line: sigma(t) = (F(t) - a(t)) . u_e, linear in t */
         double l0 = lambda_on_line(S, L, now), l1 = lambda_on_line(S, L, now + 1);
         if (isfinite(l0) && isfinite(l1)) {
-            wk_point f0 = {S->o.x + l0 * S->u.x, S->o.y + l0 * S->u.y};
-            wk_point f1 = {S->o.x + l1 * S->u.x, S->o.y + l1 * S->u.y};
-            wk_point a0 = wk_wf_position(W, S->pa, now), a1 = wk_wf_position(W, S->pa, now + 1);
-            wk_point b0 = wk_wf_position(W, S->pb, now), b1 = wk_wf_position(W, S->pb, now + 1);
-            double sa0 = (f0.x - a0.x) * L->ux + (f0.y - a0.y) * L->uy;
-            double sa1 = (f1.x - a1.x) * L->ux + (f1.y - a1.y) * L->uy;
-            double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
-            double sb1 = (b1.x - f1.x) * L->ux + (b1.y - f1.y) * L->uy;
-            double ra = sa1 - sa0, rb = sb1 - sb0;
-            /* F riding along with an end vertex (that vertex moves on s
-            ** itself: head-on reflex vertices) never leaves the piece */
-            double tiny = WK_RIDE_ALONG_REL * (fabs(l1 - l0) + L->w);
-            if (ra < -tiny) {
-                double te = now + (sa0 > 0 ? sa0 : 0) / -ra;
-                if (te < S->ev_t) S->ev_t = te, S->ev_kind = AR_SWITCH, S->ev_end = 0;
-            }
-            if (rb < -tiny) {
-                double te = now + (sb0 > 0 ? sb0 : 0) / -rb;
-                if (te < S->ev_t) S->ev_t = te, S->ev_kind = AR_SWITCH, S->ev_end = 1;
-            }
+            double te;
+            uint8_t end = 0;
+            wk_wf_ray_exit(W, S->o, S->u, S->pa, now, l0, l1, &te, &end);
+            if (te < S->ev_t) S->ev_t = te, S->ev_kind = AR_SWITCH, S->ev_end = end;
             /* F reaching its next crossing: lambda_f falls to len - xf.s */
             if (S->xf.other != WK_NONE) {
                 double target = S->len - S->xf.s, rate = l1 - l0;
@@ -422,35 +351,12 @@ static void brute_split(wk_wavefront *W, uint32_t v) {
     wk_wf_split_scan(W, v);
 }
 
-/* The pieces just beyond v's own two, tested with the reference's split
-** test: across a sub-tolerance edge v is within eps_d of its neighbour's
-** other piece, a contact the reference takes as a split right now and that
-** v's segment (a ray along v's motion) does not see.  The walk goes on past
-** each neighbour within WK_ARR_NEAR_SLACK * eps_d of v (tolerance.h).
-** O(1) unless v sits in a chain of such edges. */
-static void near_split(wk_wavefront *W, uint32_t v) {
-    double t = wk_wf_now(W), near = WK_ARR_NEAR_SLACK * wk_wf_eps_d(W);
-    wk_point pv = wk_wf_position(W, v, t);
-    wk_wf_split_search s;
-    wk_wf_split_begin(W, v, &s);
-    for (uint32_t a = wk_wf_next(W, v); a != v && wk_wf_next(W, a) != v; a = wk_wf_next(W, a)) {
-        wk_wf_split_test(W, &s, a);
-        wk_point pa = wk_wf_position(W, a, t);
-        if (!(hypot(pa.x - pv.x, pa.y - pv.y) <= near)) break;
-    }
-    for (uint32_t b = wk_wf_prev(W, v); b != v && wk_wf_prev(W, b) != v; b = wk_wf_prev(W, b)) {
-        wk_wf_split_test(W, &s, wk_wf_prev(W, b));
-        wk_point pb = wk_wf_position(W, b, t);
-        if (!(hypot(pb.x - pv.x, pb.y - pv.y) <= near)) break;
-    }
-    wk_wf_split_offer(W, &s);
-}
 
 /* v's split: v meets F along its segment; and any contact next to v
 ** (near_split). */
 static void ar_full(void *ud, wk_wavefront *W, uint32_t v) {
     ar_state *A = ud;
-    near_split(W, v);
+    wk_wf_near_split(W, v);
     if (v >= A->cap_v || A->seg_of[v] == WK_NONE) {
         brute_split(W, v); /* born in this group: its segment comes after it */
         return;

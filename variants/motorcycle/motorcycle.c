@@ -122,9 +122,7 @@ typedef struct mc_state {
 /* ------------------------------------------------------------ geometry */
 
 static double lambda_on_line(const mc_seg *S, const wk_offset_line *L, double t) {
-    double den = L->nx * S->u.x + L->ny * S->u.y;
-    if (fabs(den) < WK_ARR_PARALLEL) return NAN;
-    return (L->c + L->w * t - (L->nx * S->o.x + L->ny * S->o.y)) / den;
+    return wk_wf_ray_on_line(S->o, S->u, L, t);
 }
 
 static double lambda_of(const mc_seg *S, wk_point p) {
@@ -269,95 +267,20 @@ static void link_b(mc_state *A, wk_wavefront *W, uint32_t si, uint32_t a) {
     A->bhead[a] = si;
 }
 
-/* Where the ray o + lambda u (lambda > lambda0) meets piece a -> a.next at
-** time t: lambda, or INFINITY; *mu: the position along the piece (0..1). */
 static double hit_piece(const wk_wavefront *W, const mc_seg *S, uint32_t a, double t,
                         double lambda0, double *mu) {
-    uint32_t b = wk_wf_next(W, a);
-    wk_point pa = wk_wf_position(W, a, t), pb = wk_wf_position(W, b, t);
-    double dx = pb.x - pa.x, dy = pb.y - pa.y;
-    double den = S->u.x * dy - S->u.y * dx;
-    if (fabs(den) < WK_DIV_GUARD) return INFINITY;
-    double ex = pa.x - S->o.x, ey = pa.y - S->o.y;
-    double lam = (ex * dy - ey * dx) / den;
-    *mu = (ex * S->u.y - ey * S->u.x) / den;
-    if (*mu < -WK_RAY_PIECE_SLACK || *mu > 1 + WK_RAY_PIECE_SLACK ||
-        lam <= lambda0 + wk_wf_eps_d(W) * WK_RAY_AHEAD_REL)
-        return INFINITY;
-    return lam;
+    return wk_wf_ray_hit_piece(W, S->o, S->u, a, t, lambda0, mu);
 }
 
-static void shoot_piece(const wk_wavefront *W, const mc_seg *S, uint32_t v, uint32_t a, double t,
-                        double lambda0, uint32_t *best, double *bl, bool *at_end) {
-    double mu;
-    if (a == v || wk_wf_next(W, a) == v) return;
-    double lam = hit_piece(W, S, a, t, lambda0, &mu);
-    if (lam < *bl) {
-        *bl = lam;
-        *best = a;
-        *at_end = mu < WK_RAY_END_SNAP || mu > 1 - WK_RAY_END_SNAP;
-    }
-}
-
-/* The first piece the ray meets at time t, over v's cycle (every alive
-** piece with holes: the first piece may be on a hole's cycle). */
-static uint32_t shoot_at(mc_state *A, const wk_wavefront *W, const mc_seg *S, uint32_t v, double t,
-                         double lambda0, bool *at_end) {
-    uint32_t best = WK_NONE;
-    double bl = INFINITY;
-    wk_count(A->R, WK_VC_ray_shots, 1);
-    if (wk_wf_polygon(W)->n_rings == 1) {
-        for (uint32_t a = wk_wf_next(W, v); a != v; a = wk_wf_next(W, a))
-            shoot_piece(W, S, v, a, t, lambda0, &best, &bl, at_end);
-    } else {
-        for (uint32_t a = 0; a < wk_wf_vertex_count(W); a++)
-            if (wk_wf_alive(W, a)) shoot_piece(W, S, v, a, t, lambda0, &best, &bl, at_end);
-    }
-    return best;
-}
-
+/* The first piece along the trace just after time t: the engine's ray
+** shot over v's cycle (every alive piece with holes), O(cycle). */
 static uint32_t shoot(mc_state *A, const wk_wavefront *W, const mc_seg *S, uint32_t v, double t,
                       double lambda0) {
-    bool at_end = false;
-    uint32_t a = shoot_at(A, W, S, v, t, lambda0, &at_end);
-    if (a != WK_NONE && at_end) {
-        double later = t + WK_RAY_RESHOOT_DELAY * wk_wf_eps_t(W);
-        uint32_t b = shoot_at(A, W, S, v, later, lambda_of(S, wk_wf_position(W, v, later)), &at_end);
-        if (b != WK_NONE) a = b;
-    }
-    return a;
+    wk_count(A->R, WK_VC_ray_shots, 1);
+    return wk_wf_ray_shoot(W, S->o, S->u, v, t, lambda0);
 }
 
 /* --------------------------------------------------------------- events */
-
-/* When the moving Steiner vertex of the trace on piece a -> b (on a's
-** offset line) leaves the piece over one of its ends: *te (INFINITY if
-** never) and *end (0 over a, 1 over b).  l0, l1: its place at now, now + 1. */
-static void piece_exit(const wk_wavefront *W, const mc_seg *S, uint32_t a, uint32_t b, double now,
-                       double l0, double l1, double *te, uint8_t *end) {
-    const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
-    *te = INFINITY;
-    wk_point f0 = {S->o.x + l0 * S->u.x, S->o.y + l0 * S->u.y};
-    wk_point f1 = {S->o.x + l1 * S->u.x, S->o.y + l1 * S->u.y};
-    wk_point a0 = wk_wf_position(W, a, now), a1 = wk_wf_position(W, a, now + 1);
-    wk_point b0 = wk_wf_position(W, b, now), b1 = wk_wf_position(W, b, now + 1);
-    double sa0 = (f0.x - a0.x) * L->ux + (f0.y - a0.y) * L->uy;
-    double sa1 = (f1.x - a1.x) * L->ux + (f1.y - a1.y) * L->uy;
-    double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
-    double sb1 = (b1.x - f1.x) * L->ux + (b1.y - f1.y) * L->uy;
-    double ra = sa1 - sa0, rb = sb1 - sb0;
-    /* riding along with an end vertex (that vertex moves on the trace
-    ** itself: head-on reflex vertices) never leaves the piece */
-    double tiny = WK_RIDE_ALONG_REL * (fabs(l1 - l0) + L->w);
-    if (ra < -tiny) {
-        double t = now + (sa0 > 0 ? sa0 : 0) / -ra;
-        if (t < *te) *te = t, *end = 0;
-    }
-    if (rb < -tiny) {
-        double t = now + (sb0 > 0 ? sb0 : 0) / -rb;
-        if (t < *te) *te = t, *end = 1;
-    }
-}
 
 static void seg_event(mc_state *A, wk_wavefront *W, uint32_t si) {
     mc_seg *S = &A->s[si];
@@ -374,7 +297,7 @@ static void seg_event(mc_state *A, wk_wavefront *W, uint32_t si) {
         if (isfinite(l0) && isfinite(l1)) {
             double te;
             uint8_t end = 0;
-            piece_exit(W, S, S->pa, S->pb, now, l0, l1, &te, &end);
+            wk_wf_ray_exit(W, S->o, S->u, S->pa, now, l0, l1, &te, &end);
             if (te < S->ev_t) S->ev_t = te, S->ev_kind = MC_SWITCH, S->ev_end = end;
             if (S->xf.other != WK_NONE) {
                 double target = S->xf.lam, rate = l1 - l0;
@@ -396,7 +319,7 @@ static void seg_event(mc_state *A, wk_wavefront *W, uint32_t si) {
     if (!S->ghost || !isfinite(lo0) || !isfinite(lo1)) return;
     double te;
     uint8_t end = 0;
-    piece_exit(W, S, S->ba, S->bb, now, lo0, lo1, &te, &end);
+    wk_wf_ray_exit(W, S->o, S->u, S->ba, now, lo0, lo1, &te, &end);
     if (te < S->ev_t) S->ev_t = te, S->ev_kind = MC_BSWITCH, S->ev_end = end;
     /* B meets F (or the end, F beyond): the unswept part is gone */
     double hi0 = S->beyond ? S->len : lf0, hi1 = S->beyond ? S->len : lf1;
@@ -733,29 +656,10 @@ static void brute_split(wk_wavefront *W, uint32_t v) {
     wk_wf_split_scan(W, v);
 }
 
-/* Contacts across sub-tolerance edges next to v (see the arrangement
-** variant's README: the reference takes them as splits right now). */
-static void near_split(wk_wavefront *W, uint32_t v) {
-    double t = wk_wf_now(W), near = WK_ARR_NEAR_SLACK * wk_wf_eps_d(W);
-    wk_point pv = wk_wf_position(W, v, t);
-    wk_wf_split_search s;
-    wk_wf_split_begin(W, v, &s);
-    for (uint32_t a = wk_wf_next(W, v); a != v && wk_wf_next(W, a) != v; a = wk_wf_next(W, a)) {
-        wk_wf_split_test(W, &s, a);
-        wk_point pa = wk_wf_position(W, a, t);
-        if (!(hypot(pa.x - pv.x, pa.y - pv.y) <= near)) break;
-    }
-    for (uint32_t b = wk_wf_prev(W, v); b != v && wk_wf_prev(W, b) != v; b = wk_wf_prev(W, b)) {
-        wk_wf_split_test(W, &s, wk_wf_prev(W, b));
-        wk_point pb = wk_wf_position(W, b, t);
-        if (!(hypot(pb.x - pv.x, pb.y - pv.y) <= near)) break;
-    }
-    wk_wf_split_offer(W, &s);
-}
 
 static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
     mc_state *A = ud;
-    near_split(W, v);
+    wk_wf_near_split(W, v);
     if (v >= A->cap_v || A->seg_of[v] == WK_NONE) {
         brute_split(W, v);
         return;

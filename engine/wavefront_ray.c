@@ -1,0 +1,125 @@
+/*
+** wavefront_ray.c: static rays through the kinetic wavefront, for finders
+** that follow a moving Steiner vertex along a segment (000's A(P)
+** segments, 002's traces): where the ray o + lambda u meets an
+** offset line or a piece at time t, the first piece it meets over a cycle,
+** when a moving Steiner vertex leaves its piece, and the reference's split
+** test on the pieces next to a vertex (contacts across sub-tolerance
+** edges that no ray along the vertex's motion sees).  wavefront.h has the
+** contracts; the tolerances are tolerance.h's WK_RAY_* and WK_ARR_*.
+*/
+#include "tolerance.h"
+#include "wavefront.h"
+
+#include <math.h>
+
+double wk_wf_ray_on_line(wk_point o, wk_point u, const wk_offset_line *L, double t) {
+    double den = L->nx * u.x + L->ny * u.y;
+    if (fabs(den) < WK_ARR_PARALLEL) return NAN;
+    return (L->c + L->w * t - (L->nx * o.x + L->ny * o.y)) / den;
+}
+
+double wk_wf_ray_hit_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32_t a, double t,
+                           double lambda0, double *mu) {
+    uint32_t b = wk_wf_next(W, a);
+    wk_point pa = wk_wf_position(W, a, t), pb = wk_wf_position(W, b, t);
+    double dx = pb.x - pa.x, dy = pb.y - pa.y;
+    double den = u.x * dy - u.y * dx;
+    if (fabs(den) < WK_DIV_GUARD) return INFINITY;
+    double ex = pa.x - o.x, ey = pa.y - o.y;
+    double lam = (ex * dy - ey * dx) / den;
+    *mu = (ex * u.y - ey * u.x) / den;
+    if (*mu < -WK_RAY_PIECE_SLACK || *mu > 1 + WK_RAY_PIECE_SLACK ||
+        lam <= lambda0 + wk_wf_eps_d(W) * WK_RAY_AHEAD_REL)
+        return INFINITY;
+    return lam;
+}
+
+static void shoot_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, uint32_t a,
+                        double t, double lambda0, uint32_t *best, double *bl, bool *at_end) {
+    double mu;
+    if (v != WK_NONE && (a == v || wk_wf_next(W, a) == v)) return; /* v's own pieces */
+    double lam = wk_wf_ray_hit_piece(W, o, u, a, t, lambda0, &mu);
+    if (lam < *bl) {
+        *bl = lam;
+        *best = a;
+        *at_end = mu < WK_RAY_END_SNAP || mu > 1 - WK_RAY_END_SNAP;
+    }
+}
+
+/* One shot at time t over v's cycle (every alive piece with holes). */
+static uint32_t shoot_at(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, double t,
+                         double lambda0, bool *at_end) {
+    uint32_t best = WK_NONE;
+    double bl = INFINITY;
+    if (wk_wf_polygon(W)->n_rings == 1 && v != WK_NONE) {
+        for (uint32_t a = wk_wf_next(W, v); a != v; a = wk_wf_next(W, a))
+            shoot_piece(W, o, u, v, a, t, lambda0, &best, &bl, at_end);
+    } else {
+        for (uint32_t a = 0; a < wk_wf_vertex_count(W); a++)
+            if (wk_wf_alive(W, a)) shoot_piece(W, o, u, v, a, t, lambda0, &best, &bl, at_end);
+    }
+    return best;
+}
+
+uint32_t wk_wf_ray_shoot(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, double t,
+                         double lambda0) {
+    bool at_end = false;
+    uint32_t a = shoot_at(W, o, u, v, t, lambda0, &at_end);
+    if (a != WK_NONE && at_end && v != WK_NONE) {
+        /* a hit at a vertex is ambiguous (the ray passes through a wavefront
+        ** vertex right now): shoot again a moment later, when that vertex has
+        ** moved off the ray */
+        double later = t + WK_RAY_RESHOOT_DELAY * wk_wf_eps_t(W);
+        wk_point pv = wk_wf_position(W, v, later);
+        double l1 = (pv.x - o.x) * u.x + (pv.y - o.y) * u.y;
+        uint32_t b = shoot_at(W, o, u, v, later, l1, &at_end);
+        if (b != WK_NONE) a = b;
+    }
+    return a;
+}
+
+void wk_wf_ray_exit(const wk_wavefront *W, wk_point o, wk_point u, uint32_t a, double now,
+                    double l0, double l1, double *te, uint8_t *end) {
+    uint32_t b = wk_wf_next(W, a);
+    const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+    *te = INFINITY;
+    wk_point f0 = {o.x + l0 * u.x, o.y + l0 * u.y};
+    wk_point f1 = {o.x + l1 * u.x, o.y + l1 * u.y};
+    wk_point a0 = wk_wf_position(W, a, now), a1 = wk_wf_position(W, a, now + 1);
+    wk_point b0 = wk_wf_position(W, b, now), b1 = wk_wf_position(W, b, now + 1);
+    double sa0 = (f0.x - a0.x) * L->ux + (f0.y - a0.y) * L->uy;
+    double sa1 = (f1.x - a1.x) * L->ux + (f1.y - a1.y) * L->uy;
+    double sb0 = (b0.x - f0.x) * L->ux + (b0.y - f0.y) * L->uy;
+    double sb1 = (b1.x - f1.x) * L->ux + (b1.y - f1.y) * L->uy;
+    double ra = sa1 - sa0, rb = sb1 - sb0;
+    /* riding along with an end vertex (that vertex moves on the ray itself:
+    ** head-on reflex vertices) never leaves the piece */
+    double tiny = WK_RIDE_ALONG_REL * (fabs(l1 - l0) + L->w);
+    if (ra < -tiny) {
+        double t = now + (sa0 > 0 ? sa0 : 0) / -ra;
+        if (t < *te) *te = t, *end = 0;
+    }
+    if (rb < -tiny) {
+        double t = now + (sb0 > 0 ? sb0 : 0) / -rb;
+        if (t < *te) *te = t, *end = 1;
+    }
+}
+
+void wk_wf_near_split(wk_wavefront *W, uint32_t v) {
+    double t = wk_wf_now(W), near = WK_ARR_NEAR_SLACK * wk_wf_eps_d(W);
+    wk_point pv = wk_wf_position(W, v, t);
+    wk_wf_split_search s;
+    wk_wf_split_begin(W, v, &s);
+    for (uint32_t a = wk_wf_next(W, v); a != v && wk_wf_next(W, a) != v; a = wk_wf_next(W, a)) {
+        wk_wf_split_test(W, &s, a);
+        wk_point pa = wk_wf_position(W, a, t);
+        if (!(hypot(pa.x - pv.x, pa.y - pv.y) <= near)) break;
+    }
+    for (uint32_t b = wk_wf_prev(W, v); b != v && wk_wf_prev(W, b) != v; b = wk_wf_prev(W, b)) {
+        wk_wf_split_test(W, &s, wk_wf_prev(W, b));
+        wk_point pb = wk_wf_position(W, b, t);
+        if (!(hypot(pb.x - pv.x, pb.y - pv.y) <= near)) break;
+    }
+    wk_wf_split_offer(W, &s);
+}
