@@ -167,3 +167,17 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
     if (peak_bytes) *peak_bytes = peak;
     return st == WK_OK ? WK_OK : R->err.code;
 }
+
+wk_status wk_solve_by_reference(wk_run *R, const wk_polygon *P, uint32_t counter,
+                                wk_skeleton **out) {
+    *out = NULL;
+    wk_run_clear_error(R);
+    wk_event ev = {0, 0, 0, WK_NONE, WK_NONE, WK_NONE};
+    wk_notify_event(R, counter, &ev);
+    wk_status st = wk_variant_reference()->run(R, P, out);
+    if (st == WK_OK && (st = wk_validate(R, P, *out, 0, NULL)) != WK_OK) {
+        wk_skeleton_free(R, *out);
+        *out = NULL;
+    }
+    return st;
+}

@@ -597,6 +597,12 @@ const wk_variant *wk_variant_at(size_t i);
 /* The reference variant (the oracle; a variant's fallback where its own
 ** algorithm cannot certify a result). */
 const wk_variant *wk_variant_reference(void);
+/* For a variant whose own algorithm gave up on P (or whose skeleton failed
+** its check): clear R's error, count the variant's counter `counter` (its
+** reference_fallbacks), and answer with the reference variant, validated.
+** A right skeleton at the reference's cost, never a wrong one. */
+wk_status wk_solve_by_reference(wk_run *R, const wk_polygon *P, uint32_t counter,
+                                wk_skeleton **out);
 
 /* Run a variant on P: resets the peak, times the construction.  On success
 ** *out is the skeleton (caller frees with wk_skeleton_free); time_s and

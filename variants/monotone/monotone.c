@@ -120,15 +120,7 @@ static wk_status monotone_run(wk_run *R, const wk_polygon *P, wk_skeleton **out)
     wk_status st = monotone_merge_run(&M, out);
     mono_clear(&M);
     if (st != WK_EALGO) return st; /* ok, no memory, or WK_EUNSUPPORTED */
-    wk_run_clear_error(R);
-    wk_event ev = {0, 0, 0, WK_NONE, WK_NONE, WK_NONE};
-    wk_notify_event(R, WK_VC_reference_fallbacks, &ev);
-    if ((st = wk_variant_reference()->run(R, P, out)) != WK_OK) return st;
-    if ((st = wk_validate(R, P, *out, 0, NULL)) != WK_OK) {
-        wk_skeleton_free(R, *out);
-        *out = NULL;
-    }
-    return st;
+    return wk_solve_by_reference(R, P, WK_VC_reference_fallbacks, out);
 }
 
 static const wk_counter_def mono_counters[] = WK_VARIANT_COUNTER_TABLE(MONO_COUNTER_LIST);

@@ -36,13 +36,18 @@
 ** sorted per trace.
 **
 ** Guards that end early.  If v' dies before reaching X (an edge event with
-** a convex neighbour), the part of s' beyond v' is still unswept, but no
-** event of s' will reach X any more.  Every trace that was waiting at X
-** with F beyond is then extended: its ray is shot against the wavefront (F
-** placed on the first piece along it) and its crossings with the live
-** traces over the added part are listed (trace_extensions).  002 keeps the
-** unswept remainder of s' in its extended wavefront instead; this variant
-** tracks one moving Steiner vertex per trace (README).
+** a convex neighbour), the part of s' beyond v' is still unswept.  s' then
+** lives on as a ghost: B, a moving Steiner vertex on the piece that sweeps
+** it on, replaces v' and cuts the waiting traces when it passes X (002
+** keeps that part of M(G) in its extended wavefront).  Where no such piece
+** is found, or B or the ghost's F cannot be followed locally, every trace
+** waiting there with F beyond is extended instead: its ray is shot against
+** the wavefront (F placed on the first piece along it) and its crossings
+** with the live traces over the added part are listed (trace_extensions).
+**
+** Check and fallback.  The skeleton is validated before it is returned;
+** if the finder gave up or its skeleton fails, the reference variant
+** answers (reference_fallbacks).
 **
 ** After every group of wavefront events only what the group touched is
 ** revisited (wk_wf_last_group), as in the arrangement variant.
@@ -50,17 +55,10 @@
 #include "motorcycle.h"
 #include "motorcycle_graph.h"
 #include "event_queue.h"
-#include "ray_shoot.h"
 #include "wavefront.h"
 
 #include <math.h>
 #include <string.h>
-#ifdef MC_DEBUG
-#include <stdio.h>
-#define DBG(...) fprintf(stderr, __VA_ARGS__)
-#else
-#define DBG(...) ((void)0)
-#endif
 
 enum { MC_SWITCH = 0, MC_START = 1, MC_FRONT = 2, MC_BSWITCH = 3, MC_DONE = 4 };
 
@@ -285,7 +283,6 @@ static uint32_t shoot(mc_state *A, const wk_wavefront *W, const mc_seg *S, uint3
 static void seg_event(mc_state *A, wk_wavefront *W, uint32_t si) {
     mc_seg *S = &A->s[si];
     double now = wk_wf_now(W);
-    (void)A;
     S->ev_t = INFINITY;
     S->ev_kind = MC_SWITCH;
     if (!live(S)) return;
@@ -333,7 +330,6 @@ static void seg_event(mc_state *A, wk_wavefront *W, uint32_t si) {
 static wk_status schedule_seg(mc_state *A, wk_wavefront *W, uint32_t si) {
     seg_event(A, W, si);
     mc_seg *S = &A->s[si];
-    DBG("    sched seg %u v %u ghost %d at %.9g: ev %.9g kind %d pa %d xf(%.6g,%d) xv(%.6g,%d) lo %.6g\n", si, S->v, S->ghost, wk_wf_now(W), S->ev_t, S->ev_kind, (int)S->pa, S->xf.lam, (int)S->xf.other, S->xv.lam, (int)S->xv.other, live(S) ? lambda_lo(W, S, wk_wf_now(W)) : 0);
     if (!isfinite(S->ev_t)) {
         wk_event_queue_remove(A->R, &A->Q, si);
         return WK_OK;
@@ -625,7 +621,6 @@ static wk_status kill_ghost(mc_state *A, wk_wavefront *W, uint32_t si, double t)
 ** found, the traces it guards are extended). */
 static wk_status remove_segment(mc_state *A, wk_wavefront *W, uint32_t si, double t) {
     mc_seg *S = &A->s[si];
-    DBG("t=%.9g remove seg %u v %u lv %.9g lf %.9g len %.9g\n", t, si, S->v, lambda_v(W, S, t), lambda_f(W, S, t), S->len);
     double lv = lambda_v(W, S, t), lf = lambda_f(W, S, t);
     bool met = isfinite(lf) && lf <= lv + WK_RELOCATE_SLACK * wk_wf_eps_d(W);
     if (!met && guards_ahead(A, W, si, lv)) {
@@ -755,17 +750,6 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
             has_guard = fabs(S->x[k].lam - S->len) <= WK_RELOCATE_SLACK * wk_wf_eps_d(W);
         if (!has_guard) st = place_f(A, W, si, 0.0, true);
     }
-#ifdef MC_DEBUG
-    for (uint32_t i = 0; i < G->n; i++) {
-        const wk_motorcycle *m = &G->m[i];
-        DBG("moto %u v %u kind %d len %.9g other %d other_len %.9g group %d\n", i, m->vertex, m->kind, m->len, (int)m->other, m->other_len, (int)m->group);
-    }
-    for (uint32_t si = 0; si < A->n_s; si++) {
-        DBG("seg %u v %u len %.9g beyond %d pa %d:", si, A->s[si].v, A->s[si].len, A->s[si].beyond, (int)A->s[si].pa);
-        for (uint32_t k = 0; k < A->s[si].nx; k++) DBG(" (%.9g,%u)", A->s[si].x[k].lam, A->s[si].x[k].other);
-        DBG("\n");
-    }
-#endif
     if (seg_id) WK_FREE_ARRAY(R, seg_id, G->n);
     wk_motorcycle_graph_free(R, G);
     uint32_t n_graph = A->n_s;
@@ -1011,7 +995,6 @@ static wk_status spawn_far(mc_state *A, wk_wavefront *W, uint32_t sj, double lam
 static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via,
                      uint32_t far) {
     mc_seg *T = &A->s[sj];
-    DBG("  cut seg %u (v %u) at %.9g by piece %u via %u\n", sj, T->v, lam, a, via);
     double t = wk_wf_now(W);
     /* The part of s' beyond X is no longer reached from v': if a piece
     ** sweeps it on (far) and it guards traces, it lives on as a ghost; else
@@ -1047,22 +1030,13 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     }
     T = &A->s[sj];
     double l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
-    if (T->pa == a && !(l1 < l0)) {
+    uint32_t c = l1 < l0 ? WK_NONE : facing_piece(W, T, a, lam, t);
+    if (c != WK_NONE) {
         /* X at a corner of the cutting piece: the piece on the other side of
-        ** the corner may be the one that sweeps on towards v' (B) */
-        uint32_t c = facing_piece(W, T, a, lam, t);
-        if (c != WK_NONE) {
-            unlink_f(A, sj);
-            link_f(A, W, sj, c);
-            T = &A->s[sj];
-            l0 = lambda_f(W, T, t), l1 = lambda_f(W, T, t + 1);
-        }
-    }
-    if (T->pa != a && T->pa != WK_NONE && l1 < l0) {
-        T->xf = next_down(T, at, via);
-    } else if (T->pa != a) {
-        /* a recursive cut moved F' on already (defensive: F' is at X, so
-        ** none should) */
+        ** the corner sweeps on towards v' (B) */
+        unlink_f(A, sj);
+        link_f(A, W, sj, c);
+        A->s[sj].xf = next_down(&A->s[sj], at, via);
     } else if (T->ghost && fabs(lam - lambda_lo(W, T, t)) <= slack) {
         /* B is at X too: the ghost's unswept part is gone (the traces
         ** through X were cut above) */
@@ -1112,7 +1086,6 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
     if (A->guard_n > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024)
         return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "motorcycle: no progress at t = %.17g", t);
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
-    DBG("t=%.9g seg %u v %u kind %d pa %d beyond %d xf(%.6g,%d) xv(%.6g,%d) len %.6g\n", t, si, S->v, S->ev_kind, (int)S->pa, S->beyond, S->xf.lam, (int)S->xf.other, S->xv.lam, (int)S->xv.other, S->len);
     if (!live(S)) return WK_OK;
     if (S->ev_kind == MC_DONE) { /* a ghost's B met F: its trace is swept */
         drop(A, si);
@@ -1290,15 +1263,7 @@ static wk_status motorcycle_run(wk_run *R, const wk_polygon *P, wk_skeleton **ou
         *out = NULL;
     }
     if (st != WK_EALGO && st != WK_EINVALID) return st;
-    wk_run_clear_error(R);
-    wk_event ev = {0, 0, 0, WK_NONE, WK_NONE, WK_NONE};
-    wk_notify_event(R, WK_VC_reference_fallbacks, &ev);
-    if ((st = wk_variant_reference()->run(R, P, out)) != WK_OK) return st;
-    if ((st = wk_validate(R, P, *out, 0, NULL)) != WK_OK) {
-        wk_skeleton_free(R, *out);
-        *out = NULL;
-    }
-    return st;
+    return wk_solve_by_reference(R, P, WK_VC_reference_fallbacks, out);
 }
 
 static void mc_clear(mc_state *Ap) {
