@@ -1023,6 +1023,10 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         if (fabs(c.lam - at) > slack) continue;
         if (c.other == via || c.other >= A->n_s || !live(&A->s[c.other])) continue;
         const mc_seg *O = &A->s[c.other];
+        /* already cut by this piece in this instant (a piece parallel to a
+        ** trace leaves its F undefined, so `unswept` alone would cut it
+        ** again and again: a fuzz finding, infinite recursion) */
+        if (O->pa == a) continue;
         wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
         double lo = lambda_of(O, X);
         if (unswept(W, O, lo, t) && cut(A, W, c.other, a, lo, sj, WK_NONE) != WK_OK)
