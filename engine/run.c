@@ -143,10 +143,21 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
     size_t peak = 0;
     wk_error first;
     wk_status st = WK_OK;
-    for (double scale = scale0;; scale *= WK_TOL_ESCALATE_STEP) {
+    /* The ladder: the given tolerances, then coarser ones up to
+    ** WK_TOL_ESCALATE_MAX, then finer ones down to WK_TOL_REFINE_MIN
+    ** (tolerance.h says when each helps).  A first attempt that succeeds
+    ** costs nothing extra, and the order keeps every earlier answer. */
+    double ladder[16];
+    int rungs = 0;
+    for (double s = 1; s <= WK_TOL_ESCALATE_MAX && rungs < 8; s *= WK_TOL_ESCALATE_STEP)
+        ladder[rungs++] = s;
+    for (double s = 1 / WK_TOL_ESCALATE_STEP; s >= WK_TOL_REFINE_MIN && rungs < 16;
+         s /= WK_TOL_ESCALATE_STEP)
+        ladder[rungs++] = s;
+    for (int i = 0; i < rungs; i++) {
         double t_s = 0;
         size_t pk = 0;
-        R->opt.tol_scale = scale;
+        R->opt.tol_scale = scale0 * ladder[i];
         st = wk_solve(R, V, P, out, &t_s, &pk);
         total_s += t_s;
         if (pk > peak) peak = pk;
@@ -154,10 +165,8 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
             wk_skeleton_free(R, *out);
             *out = NULL;
         }
-        if (scale == scale0) first = R->err;
-        if (st == WK_OK || (st != WK_EALGO && st != WK_EINVALID) ||
-            scale * WK_TOL_ESCALATE_STEP > WK_TOL_ESCALATE_MAX * scale0)
-            break;
+        if (i == 0) first = R->err;
+        if (st == WK_OK || (st != WK_EALGO && st != WK_EINVALID) || i + 1 == rungs) break;
         wk_run_clear_error(R);
         wk_count(R, WK_COUNTER_tolerance_escalations, 1);
     }

@@ -110,6 +110,17 @@
 ** double arc at 1 * eps_d and valid ones from 4 * eps_d on. */
 #define WK_TOL_ESCALATE_STEP 4.0
 #define WK_TOL_ESCALATE_MAX 64.0
+/* ... and when no coarser picture helps either, with tolerances
+** WK_TOL_ESCALATE_STEP times finer, down to WK_TOL_REFINE_MIN times.  eps_t
+** is set by the slowest vertices (eps_d / wmax), but a vertex of speed s
+** moves s * eps_t within it: a spike of angle 1e-6 has a vertex of speed
+** 2e6, which covers 2000 eps_d in eps_t and merges features of 1e-6 scale
+** into one group that cannot be paired (a fuzz finding: an H shape of unit
+** arms beside a spike 1e6 long, tests/data/fuzz/
+** invalid_naive_translated_h_cycle.wpoly, valid from 1/4 down).  At 1/64,
+** eps_t = 1.6e-14 * scale / wmax is still 100 times the rounding of a
+** constructed time (~1e-16 * scale / wmax). */
+#define WK_TOL_REFINE_MIN (1.0 / 64.0)
 
 /* ------------------------------------------------------- the validator */
 

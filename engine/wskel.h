@@ -612,9 +612,12 @@ wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skele
 /* wk_solve, then wk_validate (tol as there; rep may be NULL).  When the
 ** variant fails (WK_EALGO) or its skeleton fails validation, the input is
 ** solved again with the simulation's tolerances WK_TOL_ESCALATE_STEP times
-** coarser, up to WK_TOL_ESCALATE_MAX (tolerance.h): a skeleton feature at
-** the scale of the tolerance that the fine tolerance split inconsistently
-** is resolved at a coarser one, still far inside the validator's.  Returns
+** coarser, up to WK_TOL_ESCALATE_MAX, then WK_TOL_ESCALATE_STEP times finer,
+** down to WK_TOL_REFINE_MIN (tolerance.h): a skeleton feature at the scale
+** of the tolerance that the fine tolerance split inconsistently is resolved
+** at a coarser one, still far inside the validator's; features that a very
+** fast vertex (a needle-sharp spike) sweeps past within one time tolerance
+** are told apart at a finer one.  Returns
 ** the first valid skeleton, or the first attempt's failure.  time_s and
 ** peak_bytes cover all attempts (time summed, peak the largest); the
 ** counters add up over the attempts and tolerance_escalations counts the
