@@ -9,6 +9,7 @@
     leaves absent counters out, puts at most MAX_LINES data series in a
     panel (splitting a family's panel when there are more), one panel per
     family, and every legend beside its panel, clear of the data;
+  - report.py embeds the figures and, with --roof, the rendered roof;
   - regress.py passes identical runs and fails on a changed counter, where
     an empty cell equals only an empty cell;
   - large_report.py (scripts/perf_large.sh's report): the exponent, time /
@@ -405,6 +406,26 @@ def test_plot_legends_cover_no_data():
     assert titles == ["crossing: peak memory against k", "crossing: time against k",
                       "star: peak memory against k", "star: time against k"], titles
     plt.close("all")
+
+
+def test_report_embeds_the_roof():
+    path = write_csv("report.csv", sweep_rows())
+    plots = os.path.join(TMP, "report_plots")
+    rc, text = run("plot.py", path, plots)
+    assert rc == 0, text
+    roof = os.path.join(TMP, "roofdir", "roof.png")
+    os.makedirs(os.path.dirname(roof), exist_ok=True)
+    shutil.copy(os.path.join(ROOT, "results", "roof", "roof_holes.png"), roof)
+    out = os.path.join(TMP, "out", "REPORT.md")
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    rc, text = run("report.py", path, plots, out, "--roof", roof)
+    assert rc == 0, text
+    md = open(out).read()
+    assert "## A roof" in md and "](../roofdir/roof.png)" in md, md[-600:]
+    assert "](../report_plots/k_effect.png)" in md
+    # Without --roof (or with a missing file) no roof section.
+    rc, text = run("report.py", path, plots, out, "--roof", roof + ".absent")
+    assert rc == 0 and "## A roof" not in open(out).read(), text
 
 
 # ---------------------------------------------------------------- regress.py
