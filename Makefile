@@ -126,6 +126,7 @@ test-cli: all
 	bash tests/test_layering.sh
 test-py: all python
 	$(PY) tests/test_python.py
+	WSKEL_CHECKED_RUNS=1 $(PY) tests/test_python.py
 	$(PY) tests/test_outputs.py
 	$(PY) tests/test_degenerate.py
 	$(PY) tests/test_holes.py

@@ -18,11 +18,15 @@
   - roof: one face per input edge, each starting with its edge, the faces'
     projected areas summing to the polygon's, z = t;
   - examples/plot_skeleton.py writes a PNG;
+  - allocation failures: each allocation request of a skeleton, offset and
+    roof call refused in turn (debug backend): MemoryLimitError, no leak;
   - leaks: 10^4 small calls (skeleton, offset, roof and an error path):
     every run closes with 0 tracked bytes, and the process RSS after them is
     within 4 MiB of the RSS after the first 10^3.
+With WSKEL_CHECKED_RUNS=1 every run uses the debug allocator backend (each
+free's size checked; make test-py runs the file both ways).
 Prints a line per test and 'N passed, N failed'; exits 1 on any failure.
-usage: /usr/bin/python3 tests/test_python.py
+usage: [WSKEL_CHECKED_RUNS=1] /usr/bin/python3 tests/test_python.py
 """
 import math
 import os
@@ -301,6 +305,39 @@ def leak_round(i):
             wskel.skeleton([(0, 0), (2, 2), (2, 0), (0, 2)])
         except wskel.InputError:
             pass
+
+
+def test_allocation_failures_leave_nothing():
+    """Every allocation of a skeleton, offset and roof call refused in turn
+    (the debug backend's fault injection): each refusal is a
+    MemoryLimitError or, where the engine recovers, a result; never a leak
+    or a crash.  The debug backend also checks every free's size."""
+    calls = [lambda: wskel.skeleton(FRAME[0], FRAME[1], weights=[1, 2, 1, 1, 1, 1, 1, 1]),
+             lambda: wskel.offset([(0, 0), (3, 0), (3, 2), (0, 3)],
+                                  t=[0.2, 0.6]),
+             lambda: wskel.roof(FRAME[0], FRAME[1])]
+    before = wskel.run_stats()
+    for call in calls:
+        wskel._test_alloc["checked"] = True
+        try:
+            call()
+            total = wskel.run_stats()["last_alloc_requests"]
+            assert total > 5, total
+            refused = 0
+            for fail_at in range(1, total + 1):
+                wskel._test_alloc["fail_at"] = fail_at
+                try:
+                    call()
+                except wskel.MemoryLimitError as e:
+                    assert e.exit_code == 2 and e.status == "out of memory", e
+                    refused += 1
+                finally:
+                    wskel._test_alloc["fail_at"] = 0
+            assert refused >= total // 2, (refused, total)
+        finally:
+            wskel._test_alloc["checked"] = False
+    after = wskel.run_stats()
+    assert after["leaked_bytes"] == before["leaked_bytes"] == 0, after
 
 
 def test_no_leaks_over_10000_calls():

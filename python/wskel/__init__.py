@@ -63,6 +63,8 @@ def _sig(name, restype, *argtypes):
 
 
 _new = _sig("wks_new", _h)
+_new_checked = _sig("wks_new_checked", _h, ctypes.c_uint64)
+_alloc_requests = _sig("wks_alloc_requests", ctypes.c_uint64, _h)
 _close = _sig("wks_close", ctypes.c_size_t, _h)
 _c_solve = _sig("wks_solve", ctypes.c_int, _h, ctypes.c_uint32, _u32p, _f64p, _f64p, _f64p,
               ctypes.c_char_p, ctypes.c_char_p, ctypes.c_uint32, ctypes.c_int, ctypes.c_int)
@@ -168,13 +170,20 @@ def _raise(h):
 
 # -------------------------------------------------------------- the runs
 
-# Counts over this process: runs closed, and the tracked bytes they left
-# live (each must be 0; a nonzero one also raised LeakError).
-_stats = {"runs": 0, "leaked_bytes": 0}
+# Counts over this process: runs closed, the tracked bytes they left live
+# (each must be 0; a nonzero one also raised LeakError), and the allocation
+# requests of the last checked run.
+_stats = {"runs": 0, "leaked_bytes": 0, "last_alloc_requests": 0}
+
+# For tests (tests/test_python.py), not for use: while "checked" is true,
+# runs use the debug allocator backend (every free's size checked, guard
+# bytes), and with "fail_at" = N > 0 its N-th allocation request fails.
+_test_alloc = {"checked": os.environ.get("WSKEL_CHECKED_RUNS") == "1", "fail_at": 0}
 
 
 def run_stats():
-    """{"runs": runs closed so far, "leaked_bytes": tracked bytes they left}."""
+    """{"runs": runs closed so far, "leaked_bytes": tracked bytes they left,
+    "last_alloc_requests": allocation requests of the last checked run}."""
     return dict(_stats)
 
 
@@ -182,12 +191,19 @@ class _Run:
     """One handle (one wk_run); closes it and checks the byte count."""
 
     def __enter__(self):
-        self.h = _new()
+        if _test_alloc["checked"] or _test_alloc["fail_at"]:
+            self.h = _new_checked(_test_alloc["fail_at"])
+            self.checked = True
+        else:
+            self.h = _new()
+            self.checked = False
         if not self.h:
             raise MemoryLimitError("could not allocate a run handle", status="memory")
         return self.h
 
     def __exit__(self, exc_type, exc, tb):
+        if self.checked:
+            _stats["last_alloc_requests"] = int(_alloc_requests(self.h))
         live = _close(self.h)
         _stats["runs"] += 1
         _stats["leaked_bytes"] += live

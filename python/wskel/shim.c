@@ -39,6 +39,7 @@
 
 typedef struct wks_handle {
     wk_run R;
+    wk_alloc_debug_state dbg; /* the debug backend's, for wks_new_checked */
     const wk_variant *V;  /* set by wks_solve */
     wk_polygon *P;
     wk_skeleton *S;
@@ -55,6 +56,22 @@ wks_handle *wks_new(void) {
     if (h) wk_run_init(&h->R);
     return h;
 }
+
+/* For tests: a handle whose run uses the debug allocator backend (sizes
+** checked on every free, guard bytes; see engine/wskel.h), refusing its
+** fail_at-th allocation request (0: none), so that every failure path of
+** the shim can be driven.  Not strict: a leak is reported by wks_close's
+** return value, not by an abort that would take the interpreter down. */
+wks_handle *wks_new_checked(uint64_t fail_at) {
+    wks_handle *h = wks_new();
+    if (!h) return NULL;
+    h->dbg.fail_at = fail_at;
+    h->R.alloc.backend = &wk_alloc_debug; /* no block is live yet */
+    h->R.alloc.ud = &h->dbg;
+    return h;
+}
+/* Allocation requests the debug backend has seen (wks_new_checked). */
+uint64_t wks_alloc_requests(const wks_handle *h) { return h->dbg.requests; }
 
 static void free_roof(wks_handle *h) {
     if (h->face_node) WK_FREE_ARRAY(&h->R, h->face_node, h->n_face_node);
@@ -209,10 +226,11 @@ int wks_roof(wks_handle *h) {
         /* stored face e starts at sum of len[< e] in all */
         uint32_t *at = WK_NEW_ARRAY(R, uint32_t, P->n);
         h->face_node = WK_NEW_ARRAY(R, uint32_t, n_all);
+        /* Its size is recorded as soon as it exists: free_roof frees by it. */
+        if (h->face_node) h->n_face_node = n_all;
         if (!at || !h->face_node) {
             st = WK_ENOMEM;
         } else {
-            h->n_face_node = n_all;
             for (uint32_t e = 1; e < P->n; e++) at[e] = at[e - 1] + len[e - 1];
             for (uint32_t i = 0; i < P->n; i++) {
                 uint32_t e = stored_of[i];
@@ -221,7 +239,6 @@ int wks_roof(wks_handle *h) {
             }
         }
         if (at) WK_FREE_ARRAY(R, at, P->n);
-        if (!h->face_node) h->n_face_node = 0;
     }
     if (all) WK_FREE_ARRAY(R, all, cap);
     if (len) WK_FREE_ARRAY(R, len, P->n);
