@@ -18,6 +18,7 @@
   - roof: one face per input edge, each starting with its edge, the faces'
     projected areas summing to the polygon's, z = t;
   - examples/plot_skeleton.py writes a PNG;
+  - threads: four threads solving at once get the serial results;
   - allocation failures: each allocation request of a skeleton, offset and
     roof call refused in turn (debug backend): MemoryLimitError, no leak;
   - leaks: 10^4 small calls (skeleton, offset, roof and an error path):
@@ -338,6 +339,33 @@ def test_allocation_failures_leave_nothing():
             wskel._test_alloc["checked"] = False
     after = wskel.run_stats()
     assert after["leaked_bytes"] == before["leaked_bytes"] == 0, after
+
+
+def test_threads_share_nothing():
+    """Runs in several threads at once (ctypes drops the GIL in the C calls;
+    each call has its own run) give the serial results."""
+    import threading
+    polys = [[(0, 0), (4 + i, 0), (4 + i, 2 + (i % 3)), (2, 1.5), (0, 2 + i % 2)]
+             for i in range(8)]
+    want = [interior(wskel.skeleton(p, variant="arrangement")) for p in polys]
+    got, errors = {}, []
+
+    def work(j):
+        try:
+            for rep in range(25):
+                i = (j + rep) % len(polys)
+                r = interior(wskel.skeleton(polys[i], variant="arrangement"))
+                if r != want[i]:
+                    errors.append((j, i, r))
+            got[j] = True
+        except Exception as e:  # noqa: BLE001  (reported below)
+            errors.append((j, repr(e)))
+    ts = [threading.Thread(target=work, args=(j,)) for j in range(4)]
+    for t in ts:
+        t.start()
+    for t in ts:
+        t.join()
+    assert not errors and len(got) == 4, errors[:3]
 
 
 def test_no_leaks_over_10000_calls():
