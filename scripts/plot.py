@@ -282,15 +282,28 @@ def plot_k(rows, outdir, written):
         for i, g in enumerate(gs):
             kk, x, t, m = k_points(groups[g])
             c = cmap(i % 10)
-            at.plot(x, t, marker="o", color=c, label=k_label(g), markersize=4)
-            am.plot(x, m, marker="o", color=c, label=k_label(g), markersize=4)
+            num = [i for i, k in enumerate(kk) if k != "max"]
+            at.plot([x[i] for i in num], [t[i] for i in num], marker="o", color=c,
+                    label=k_label(g), markersize=4)
+            am.plot([x[i] for i in num], [m[i] for i in num], marker="o", color=c,
+                    label=k_label(g), markersize=4)
+            # k = max sits at its numeric value (r), among the numeric k: a
+            # hollow marker off the line tells it apart.
+            for k, xi, ti, mi in zip(kk, x, t, m):
+                if k == "max":
+                    for ax, y in ((at, ti), (am, mi)):
+                        if y is not None:
+                            ax.plot([xi], [y], marker="o", markersize=8, linestyle="None",
+                                    markerfacecolor="white", markeredgecolor=c, zorder=3)
+                            ax.annotate("max", (xi, y), fontsize=6, textcoords="offset points",
+                                        xytext=(4, -9))
             ax2.plot(m, t, marker="o", color=c, label=k_label(g), markersize=4)
             for k, mi, ti in zip(kk, m, t):
                 if mi is not None and ti is not None:
                     ax2.annotate(str(k), (mi, ti), fontsize=6, textcoords="offset points",
                                  xytext=(3, 3))
         for ax, yl in ((at, "construction time (s)"), (am, "peak tracked bytes")):
-            loglog(ax, "k (cache size; max plotted at r)", yl)
+            loglog(ax, "k (cache size; max, hollow, plotted at r)", yl)
             ax.set_xscale("log", base=2)
         at.set_title("%s%s: time against k" % (fam, suffix), fontsize=9)
         am.set_title("%s%s: peak memory against k" % (fam, suffix), fontsize=9)
