@@ -117,8 +117,9 @@ class Error(Exception):
         if exit_code is not None:
             self.exit_code = exit_code
         where = input + (":%d" % input_line if input_line else "")
-        super().__init__("%s%s (%s, raised at %s:%d)" % (where + ": " if where else "", message,
-                                                         status, src_file, src_line))
+        # Errors found by the binding itself (argument shapes) have no place in wskel's C.
+        origin = ", raised at %s:%d" % (src_file, src_line) if src_file else ""
+        super().__init__("%s%s (%s%s)" % (where + ": " if where else "", message, status, origin))
 
 
 class InputError(Error, ValueError):
