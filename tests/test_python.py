@@ -17,6 +17,7 @@
     replaces the stand-in): area decreasing, outer rings CCW, holes CW;
   - roof: one face per input edge, each starting with its edge, the faces'
     projected areas summing to the polygon's, z = t;
+  - the README's Python example prints what its comments say;
   - examples/plot_skeleton.py writes a PNG;
   - threads: four threads solving at once get the serial results;
   - allocation failures: each allocation request of a skeleton, offset and
@@ -273,6 +274,30 @@ def test_roof_faces():
             start += m
         poly_area = abs(area(outer)) - sum(abs(area(h)) for h in holes)
         assert abs(total - poly_area) < 1e-9 * poly_area, (total, poly_area)
+
+
+def test_readme_example_runs():
+    """The README's Python example, run as given from the repository root,
+    prints what its comments say."""
+    text = open(os.path.join(ROOT, "README.md")).read()
+    blocks = text.split("```python\n")
+    assert len(blocks) == 2, "README.md should have one Python example"
+    code = blocks[1].split("```")[0]
+    rc, out, err = run_in_root(code)
+    assert rc == 0, err
+    lines = out.splitlines()
+    assert lines[0] == "[(3., 1., 1.) (1., 1., 1.)]", lines
+    assert lines[1] == "[(1, 4, 0, 1) (0, 5, 3, 0)]", lines
+    assert lines[2] == "2" and lines[-2] == "4 [0 1 4 5]", lines
+    assert lines[-1] == "1 edge 0 crosses edge 2", lines
+
+
+def run_in_root(code):
+    """(exit code, stdout, stderr) of Python code run from the repository root."""
+    import subprocess
+    p = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                       timeout=60)
+    return p.returncode, p.stdout, p.stderr
 
 
 def test_example_script_writes_png():
