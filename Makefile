@@ -50,7 +50,7 @@ ifneq ($(HAVE_BENCH),)
 PROGS += bin/wskel-bench
 endif
 
-.PHONY: all test test-unit test-asan test-cli test-py bench curves regress clean setup stress stress-quick
+.PHONY: all test test-unit test-asan test-cli test-py bench curves regress clean setup stress stress-quick python
 
 all: $(LIB) $(GENLIB) $(PROGS)
 
@@ -94,6 +94,22 @@ $(BA)/tests/run_tests: $(TEST_SRC:%.c=$(BA)/%.o) $(GENLIBASAN) $(LIBASAN)
 $(BA)/wskel: $(BA)/cli/main.o $(LIBASAN)
 	$(CC) $(CFLAGS) -fsanitize=address,undefined $^ -o $@ $(LDLIBS)
 
+# The Python module (python/wskel/, README "Python"): the library compiled
+# again with -fPIC into build-pic/, with the ctypes shim, into one shared
+# object next to the binding.  Until the engine's offsets (engine/offset.c)
+# are merged, a temporary stand-in (python/wskel/offset_standin.c, convex
+# polygons only) provides wk_offset.
+BP := build-pic
+PYSO := python/wskel/_libwskel.so
+OFFSET_STANDIN := $(if $(wildcard engine/offset.c),,python/wskel/offset_standin.c)
+PY_SRC := $(LIB_SRC) python/wskel/shim.c $(OFFSET_STANDIN)
+$(BP)/%.o: %.c $(HDRS) $(wildcard python/wskel/*.h)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fPIC $(if $(OFFSET_STANDIN),-DWKS_OFFSET_STANDIN) -c $< -o $@
+$(PYSO): $(PY_SRC:%.c=$(BP)/%.o)
+	$(CC) $(CFLAGS) -shared -Wl,--no-undefined $^ -o $@ $(LDLIBS)
+python: $(PYSO)
+
 # Unit and property tests, then the same under ASan/UBSan, then the
 # command-line and Python-side tests (exit codes, messages, VTK read-back,
 # CGAL agreement).
@@ -108,7 +124,9 @@ test-asan: $(BA)/tests/run_tests $(BA)/wskel
 test-cli: all
 	bash tests/cli_tests.sh
 	bash tests/test_layering.sh
-test-py: all
+test-py: all python
+	$(PY) tests/test_python.py
+	WSKEL_CHECKED_RUNS=1 $(PY) tests/test_python.py
 	$(PY) tests/test_outputs.py
 	$(PY) tests/test_degenerate.py
 	$(PY) tests/test_holes.py
@@ -132,7 +150,7 @@ setup:
 	bash .ci/install-deps
 
 clean:
-	rm -rf $(B) $(BA) bin
+	rm -rf $(B) $(BA) $(BP) bin $(PYSO)
 
 # Fuzzing (tests/fuzz/README.md): libFuzzer targets built by clang with
 # ASan/UBSan against the library sources compiled the same way into

@@ -1,15 +1,24 @@
-#!/usr/bin/python3
 """plot.py: figures from a wskel-bench CSV, as PNG and SVG.
 
-    time_vs_n        time against n, log-log, one line per variant and family
-                     (median over seeds and repeats, weights split into
-                     panels), the log-log slope in the legend and the NNLS
-                     model of fit.py as a dashed curve;
-    memory_vs_n      peak tracked bytes and peak RSS against n;
-    k_effect         time and peak tracked bytes against k at fixed n and r;
-    k_tradeoff       time against peak tracked bytes, points labelled by k;
+Every figure is small multiples: one panel per family (and weight mode, or
+per variant for the event counts), at most MAX_LINES data series per panel
+(a group with more is split over several panels), each variant in the same
+colour in every panel, the legend outside the panel so it covers no data.
+
+    time_vs_n        time against n, log-log, one panel per family and
+                     weight mode, one line per variant (median over seeds
+                     and repeats; variants with a cache at their largest k),
+                     the log-log slope in the legend and the NNLS model of
+                     fit.py dashed beside its data, in the data's colour;
+    memory_vs_n      peak tracked bytes (solid) and peak RSS (dotted)
+                     against n, the same panels;
+    k_effect         per family: time against k (top) and peak tracked
+                     bytes against k (bottom) at fixed n and r;
+    k_tradeoff       per family: time against peak tracked bytes, points
+                     labelled by k;
     events_vs_bounds switch events against n r, start events against r^2,
-                     all events against n.
+                     all events against n: one row per count, one column
+                     per variant, one colour per family.
 A figure whose data are absent (e.g. no variant with k yet) is skipped, and
 said so.  Only rows with status ok are plotted; an empty counter cell (the
 row's variant has no such counter) is no point, not a zero.  The model is
@@ -20,6 +29,7 @@ usage: plot.py RESULTS.csv OUTDIR [--fit FIT.json]
 """
 import argparse
 import json
+import math
 import os
 import sys
 
@@ -27,20 +37,27 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fit  # noqa: E402  (the model's formula, fit.predict)
 from results import group_by, k_order, k_value, load_csv, loglog_slope  # noqa: E402
 
-MARKERS = {"naive": "o", "cgal": "s", "arrangement": "^"}
+MAX_LINES = 6       # data series per panel: more are not told apart at a glance
+NCOLS = 3           # panels per figure row
+PANEL = (4.4, 3.3)  # inches per panel (its data area and labels)
+LEGEND_W = 2.3      # inches beside each panel for its legend
+MARKERS = {"naive": "o", "cgal": "s", "arrangement": "^", "monotone": "v", "motorcycle": "D"}
 STYLES = {"cgal": ":"}
+VARIANT_ORDER = ["naive", "monotone", "arrangement", "motorcycle", "cgal"]
 
 
 def save(fig, outdir, name, written):
     for ext in ("png", "svg"):
         path = os.path.join(outdir, name + "." + ext)
-        fig.savefig(path, dpi=120, bbox_inches="tight")
+        fig.savefig(path, dpi=110, bbox_inches="tight")
         written.append(path)
     plt.close(fig)
 
@@ -51,74 +68,172 @@ def median_by(rows, keyf, valf):
     return {k: float(np.median([valf(r) for r in rs])) for k, rs in groups.items()}
 
 
+def variant_key(v):
+    return (VARIANT_ORDER.index(v) if v in VARIANT_ORDER else len(VARIANT_ORDER), v)
+
+
+def variant_colors(rows):
+    """One colour per variant, the same in every panel and figure."""
+    cmap = plt.get_cmap("tab10")
+    names = sorted({r["variant"] for r in rows} | set(VARIANT_ORDER), key=variant_key)
+    return {v: cmap(i % 10) for i, v in enumerate(names)}
+
+
 def family_colors(rows):
     fams = sorted({r["family"] for r in rows})
     cmap = plt.get_cmap("tab10")
     return {f: cmap(i % 10) for i, f in enumerate(fams)}
 
 
+def split(items, size=MAX_LINES):
+    """items in consecutive chunks of at most size (one chunk per panel)."""
+    return [items[i:i + size] for i in range(0, len(items), size)] or [[]]
+
+
+def panels(n, ncols=NCOLS, rows_per=1, panel=PANEL):
+    """A figure with n panel slots (rows_per stacked axes per slot), laid out
+    ncols slots wide; unused axes are hidden.  Returns (fig, [slot axes]),
+    each slot a list of rows_per axes."""
+    ncols = max(1, min(ncols, n))
+    nrows = math.ceil(n / ncols)
+    fig, axes = plt.subplots(nrows * rows_per, ncols, squeeze=False, constrained_layout=True,
+                             figsize=(ncols * (panel[0] + LEGEND_W), nrows * rows_per * panel[1]))
+    slots = []
+    for i in range(nrows * ncols):
+        r, c = divmod(i, ncols)
+        axs = [axes[r * rows_per + j][c] for j in range(rows_per)]
+        if i < n:
+            slots.append(axs)
+        else:
+            for ax in axs:
+                ax.set_visible(False)
+    return fig, slots
+
+
+def legend_beside(ax, extra=()):
+    """The axes' legend to its right, outside the data area."""
+    handles, labels = ax.get_legend_handles_labels()
+    for h in extra:
+        handles.append(h)
+        labels.append(h.get_label())
+    if handles:
+        ax.legend(handles, labels, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7,
+                  frameon=False, borderaxespad=0.0)
+
+
+def plain_ticks(axis):
+    """Ticks at 1, 2, 5 times powers of ten, written as plain numbers (n
+    from 200 to 3000 otherwise shows only the label 10^3)."""
+    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    axis.set_major_formatter(FuncFormatter(lambda v, _: "%g" % v))
+    axis.set_minor_formatter(NullFormatter())
+
+
+def loglog(ax, xlabel, ylabel):
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    if xlabel in ("n", "n (vertices)"):
+        plain_ticks(ax.xaxis)
+    ax.set_xlabel(xlabel, fontsize=8)
+    ax.set_ylabel(ylabel, fontsize=8)
+    ax.tick_params(labelsize=7)
+    ax.grid(True, which="both", alpha=0.3)
+
+
+def largest_k(rows):
+    """The rows of the largest k (all rows when the variant has none)."""
+    kbig = max((r["k"] for r in rows), key=k_order)
+    return [r for r in rows if r["k"] == kbig]
+
+
+def family_panels(rows):
+    """[(family, weights)] in order: the time and memory panels."""
+    return sorted({(r["family"], r["weights"]) for r in rows})
+
+
+def panel_slots(rows, keys, series_of):
+    """One slot per chunk of at most MAX_LINES series of each key: [(key,
+    title suffix, series)]."""
+    out = []
+    for key in keys:
+        chunks = split(series_of(key))
+        for i, ch in enumerate(chunks):
+            out.append((key, " (%d/%d)" % (i + 1, len(chunks)) if len(chunks) > 1 else "", ch))
+    return out
+
+
 def plot_time_vs_n(rows, outdir, written, fits):
-    # One k per line: variants with a cache use their largest k (else k is empty).
-    weights = sorted({r["weights"] for r in rows})
-    colors = family_colors(rows)
-    fig, axes = plt.subplots(1, len(weights), figsize=(7 * len(weights), 5.5), squeeze=False)
-    for ax, w in zip(axes[0], weights):
-        wr = [r for r in rows if r["weights"] == w]
-        lines = sorted({(r["variant"], r["family"]) for r in wr})
-        for var, fam in lines:
-            lr = [r for r in wr if r["variant"] == var and r["family"] == fam]
-            kbig = max((r["k"] for r in lr), key=k_order)
-            lr = [r for r in lr if r["k"] == kbig]
+    colors = variant_colors(rows)
+    by = group_by(rows, ("family", "weights", "variant"))
+
+    def series(key):
+        return sorted({v for (f, w, v) in by if (f, w) == key}, key=variant_key)
+    slots = panel_slots(rows, family_panels(rows), series)
+    fig, axes = panels(len(slots))
+    for (key, suffix, variants), (ax,) in zip(slots, axes):
+        fam, w = key
+        dashed = False
+        for var in variants:
+            lr = largest_k(by[(fam, w, var)])
             med = median_by(lr, lambda r: r["n"], lambda r: r["wall_s"])
-            if len(med) < 2:
+            if not med:
                 continue
             ns = sorted(med)
             ts = [med[n] for n in ns]
-            label = "%s %s (slope %.2f)" % (var, fam, loglog_slope(ns, ts))
+            slope = loglog_slope(ns, ts) if len(ns) >= 2 else float("nan")
+            k = lr[0]["k"]
+            label = "%s%s (slope %.2f)" % (var, " k=%s" % k if k != "" else "", slope)
             ax.plot(ns, ts, marker=MARKERS.get(var, "d"), linestyle=STYLES.get(var, "-"),
-                    color=colors[fam], label=label, markersize=4)
+                    color=colors[var], label=label, markersize=4)
             f = fits.get(var + "/" + fam + "/" + w)
-            if f:
+            if f and len(ns) >= 2:
                 rmed = median_by(lr, lambda r: r["n"], lambda r: r["r"])
                 kmed = median_by(lr, lambda r: r["n"], k_value)
                 grid = np.geomspace(ns[0], ns[-1], 40)
                 rr = np.interp(grid, ns, [rmed[n] for n in ns])
                 kk = np.interp(grid, ns, [kmed[n] for n in ns])
                 ax.plot(grid, [fit.predict(f, n, r, k) for n, r, k in zip(grid, rr, kk)],
-                        linestyle="--", linewidth=0.8, color=colors[fam], alpha=0.7)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("n (vertices)")
-        ax.set_ylabel("construction wall time (s)")
-        ax.set_title("time vs n, weights %s%s" % (w, " (dashed: NNLS model)" if fits else ""))
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
+                        linestyle="--", linewidth=1.0, color=colors[var], alpha=0.8)
+                dashed = True
+        loglog(ax, "n (vertices)", "construction time (s)")
+        ax.set_title("%s, weights %s%s" % (fam, w, suffix), fontsize=9)
+        legend_beside(ax, [Line2D([], [], color="gray", linestyle="--",
+                                  label="fit.py model (dashed)")] if dashed else [])
+    fig.suptitle("Construction time against n, one panel per family (median over seeds)",
+                 fontsize=11)
     save(fig, outdir, "time_vs_n", written)
 
 
 def plot_memory_vs_n(rows, outdir, written):
-    colors = family_colors(rows)
-    fig, axes = plt.subplots(1, 2, figsize=(13, 5))
-    for ax, col, title in ((axes[0], "peak_tracked_bytes", "peak tracked bytes (construction)"),
-                           (axes[1], "peak_rss_bytes", "peak RSS of the child (wait4)")):
-        for var, fam in sorted({(r["variant"], r["family"]) for r in rows}):
-            lr = [r for r in rows if r["variant"] == var and r["family"] == fam]
-            med = median_by(lr, lambda r: r["n"], lambda r: r[col])
-            if len(med) < 2:
+    colors = variant_colors(rows)
+    by = group_by(rows, ("family", "weights", "variant"))
+    cols = (("peak_tracked_bytes", "-", "tracked"), ("peak_rss_bytes", ":", "RSS"))
+
+    def series(key):
+        out = []
+        for v in sorted({v for (f, w, v) in by if (f, w) == key}, key=variant_key):
+            for col, style, what in cols:
+                if any(r[col] for r in by[key + (v,)]):
+                    out.append((v, col, style, what))
+        return out
+    slots = panel_slots(rows, family_panels(rows), series)
+    fig, axes = panels(len(slots))
+    for (key, suffix, ser), (ax,) in zip(slots, axes):
+        for var, col, style, what in ser:
+            lr = largest_k(by[key + (var,)])
+            med = median_by(lr, lambda r: r["n"], lambda r: r[col] or None)
+            if not med:
                 continue
             ns = sorted(med)
-            ax.plot(ns, [med[n] for n in ns], marker=MARKERS.get(var, "d"),
-                    linestyle=STYLES.get(var, "-"), color=colors[fam], markersize=4,
-                    label="%s %s (slope %.2f)" % (var, fam,
-                                                   loglog_slope(ns, [med[n] for n in ns])))
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("n")
-        ax.set_ylabel("bytes")
-        ax.set_title(title)
-        ax.grid(True, which="both", alpha=0.3)
-        if ax.get_legend_handles_labels()[0]:
-            ax.legend(fontsize=7)
+            ys = [med[n] for n in ns]
+            slope = loglog_slope(ns, ys) if len(ns) >= 2 else float("nan")
+            ax.plot(ns, ys, marker=MARKERS.get(var, "d"), linestyle=style, color=colors[var],
+                    markersize=4, label="%s %s (slope %.2f)" % (var, what, slope))
+        loglog(ax, "n (vertices)", "bytes")
+        ax.set_title("%s, weights %s%s" % (key[0], key[1], suffix), fontsize=9)
+        legend_beside(ax)
+    fig.suptitle("Peak tracked bytes of the construction (solid) and peak RSS of the child "
+                 "(dotted) against n", fontsize=11)
     save(fig, outdir, "memory_vs_n", written)
 
 
@@ -147,40 +262,59 @@ def k_points(rs):
     return kk, x, [t.get(k) for k in kk], [m.get(k) for k in kk]
 
 
+def k_label(g):
+    var, fam, n, r_req, h, w = g
+    return "%s n=%d r=%s%s %s" % (var, n, "default" if r_req == -1 else r_req,
+                                  " holes=%d" % h if h else "", w)
+
+
 def plot_k(rows, outdir, written):
     groups = k_groups(rows)
     if not groups:
         return "k_effect, k_tradeoff: skipped (no variant with two or more k values)"
-    fig, axes = plt.subplots(1, 2, figsize=(13, 5))
-    fig2, ax2 = plt.subplots(figsize=(7, 5.5))
-    for (var, fam, n, r_req, h, w), rs in groups.items():
-        kk, x, t, m = k_points(rs)
-        label = "%s %s n=%d r=%s%s %s" % (var, fam, n, "default" if r_req == -1 else r_req,
-                                          " holes=%d" % h if h else "", w)
-        axes[0].plot(x, t, marker="o", label=label)
-        axes[1].plot(x, m, marker="o", label=label)
-        ax2.plot(m, t, marker="o", label=label)
-        for k, mi, ti in zip(kk, m, t):
-            if mi is not None and ti is not None:
-                ax2.annotate("k=%s" % k, (mi, ti), fontsize=7, textcoords="offset points",
-                             xytext=(3, 3))
-    for ax, yl in ((axes[0], "construction wall time (s)"), (axes[1], "peak tracked bytes")):
-        ax.set_xscale("log", base=2)
-        ax.set_yscale("log")
-        ax.set_xlabel("k (cache size; max plotted at r)")
-        ax.set_ylabel(yl)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
-    axes[0].set_title("time vs k at fixed n, r")
-    axes[1].set_title("peak memory vs k at fixed n, r")
+    fams = sorted({g[1] for g in groups})
+    slots = panel_slots(rows, fams, lambda fam: [g for g in groups if g[1] == fam])
+    cmap = plt.get_cmap("tab10")
+    # k_effect: time (top) and memory (bottom) against k, one column per family.
+    fig, axes = panels(len(slots), ncols=len(slots) if len(slots) <= 4 else NCOLS, rows_per=2)
+    fig2, axes2 = panels(len(slots), ncols=len(slots) if len(slots) <= 4 else NCOLS)
+    for (fam, suffix, gs), (at, am), (ax2,) in zip(slots, axes, axes2):
+        for i, g in enumerate(gs):
+            kk, x, t, m = k_points(groups[g])
+            c = cmap(i % 10)
+            num = [i for i, k in enumerate(kk) if k != "max"]
+            at.plot([x[i] for i in num], [t[i] for i in num], marker="o", color=c,
+                    label=k_label(g), markersize=4)
+            am.plot([x[i] for i in num], [m[i] for i in num], marker="o", color=c,
+                    label=k_label(g), markersize=4)
+            # k = max sits at its numeric value (r), among the numeric k: a
+            # hollow marker off the line tells it apart.
+            for k, xi, ti, mi in zip(kk, x, t, m):
+                if k == "max":
+                    for ax, y in ((at, ti), (am, mi)):
+                        if y is not None:
+                            ax.plot([xi], [y], marker="o", markersize=8, linestyle="None",
+                                    markerfacecolor="white", markeredgecolor=c, zorder=3)
+                            ax.annotate("max", (xi, y), fontsize=6, textcoords="offset points",
+                                        xytext=(4, -9))
+            ax2.plot(m, t, marker="o", color=c, label=k_label(g), markersize=4)
+            for k, mi, ti in zip(kk, m, t):
+                if mi is not None and ti is not None:
+                    ax2.annotate(str(k), (mi, ti), fontsize=6, textcoords="offset points",
+                                 xytext=(3, 3))
+        for ax, yl in ((at, "construction time (s)"), (am, "peak tracked bytes")):
+            loglog(ax, "k (cache size; max, hollow, plotted at r)", yl)
+            ax.set_xscale("log", base=2)
+        at.set_title("%s%s: time against k" % (fam, suffix), fontsize=9)
+        am.set_title("%s%s: peak memory against k" % (fam, suffix), fontsize=9)
+        legend_beside(at)
+        loglog(ax2, "peak tracked bytes", "construction time (s)")
+        ax2.set_title("%s%s (point labels: k)" % (fam, suffix), fontsize=9)
+        legend_beside(ax2)
+    fig.suptitle("The k tradeoff per family at fixed n and r: time falls, memory grows with k",
+                 fontsize=11)
     save(fig, outdir, "k_effect", written)
-    ax2.set_xscale("log")
-    ax2.set_yscale("log")
-    ax2.set_xlabel("peak tracked bytes")
-    ax2.set_ylabel("construction wall time (s)")
-    ax2.set_title("time / memory tradeoff (labels: k)")
-    ax2.grid(True, which="both", alpha=0.3)
-    ax2.legend(fontsize=7)
+    fig2.suptitle("Time against peak memory per family, one point per k", fontsize=11)
     save(fig2, outdir, "k_tradeoff", written)
     return None
 
@@ -198,44 +332,57 @@ def event_value(r, col):
     return sum(vals) if vals else None
 
 
+EVENT_PANELS = [("switch_events", lambda r: r["n"] * max(r["r"], 1), "n r"),
+                ("start_events", lambda r: max(r["r"], 1) ** 2, "r^2"),
+                ("all events", lambda r: r["n"], "n")]
+
+
 def plot_events(rows, outdir, written):
     rs = [r for r in rows if any(r.get(c) is not None for c in EVENT_COLS)]
     if not rs:
         return "events_vs_bounds: skipped (no event counters)"
-    panels = [("switch_events", lambda r: r["n"] * max(r["r"], 1), "n r"),
-              ("start_events", lambda r: max(r["r"], 1) ** 2, "r^2"),
-              ("all events", lambda r: r["n"], "n")]
     colors = family_colors(rs)
-    fig, axes = plt.subplots(1, 3, figsize=(18, 5))
+    variants = sorted({r["variant"] for r in rs}, key=variant_key)
+    fams = sorted({r["family"] for r in rs})
+    # One column per variant and chunk of at most MAX_LINES families.
+    cols = [(v, ch) for v in variants for ch in split(fams)]
+    fig, axes = plt.subplots(len(EVENT_PANELS), len(cols), squeeze=False, constrained_layout=True,
+                             figsize=(len(cols) * (PANEL[0] + 0.3) + LEGEND_W,
+                                      len(EVENT_PANELS) * PANEL[1]))
     drawn = 0
-    for ax, (col, bound, bname) in zip(axes, panels):
-        for var, fam in sorted({(r["variant"], r["family"]) for r in rs}):
-            pts = [(bound(r), event_value(r, col)) for r in rs
-                   if r["variant"] == var and r["family"] == fam]
-            # Absent counters are no points; zeros have no place on a log axis.
-            pts = [(b, v) for b, v in pts if v is not None and v > 0]
-            if not pts:
-                continue
-            ax.scatter([p[0] for p in pts], [p[1] for p in pts], s=12, color=colors[fam],
-                       marker=MARKERS.get(var, "d"), label="%s %s" % (var, fam))
-        if ax.collections:
-            drawn += 1
-            lo = min(min(c.get_offsets()[:, 0]) for c in ax.collections)
-            hi = max(max(c.get_offsets()[:, 0]) for c in ax.collections)
-            ax.plot([lo, hi], [lo, hi], "k--", linewidth=0.8, label="= bound")
-            ax.set_xscale("log")
-            ax.set_yscale("log")
-            ax.legend(fontsize=7)
-        else:
-            ax.text(0.5, 0.5, "no %s recorded\n(zero or absent in every run)" % col,
-                    ha="center", va="center", transform=ax.transAxes)
-        ax.set_xlabel(bname)
-        ax.set_ylabel(col)
-        ax.set_title("%s vs %s" % (col, bname))
-        ax.grid(True, which="both", alpha=0.3)
+    for j, (var, chunk) in enumerate(cols):
+        for i, (col, bound, bname) in enumerate(EVENT_PANELS):
+            ax = axes[i][j]
+            for fam in chunk:
+                pts = [(bound(r), event_value(r, col)) for r in rs
+                       if r["variant"] == var and r["family"] == fam]
+                # Absent counters are no points; zeros have no place on a log axis.
+                pts = [(b, v) for b, v in pts if v is not None and v > 0]
+                if pts:
+                    ax.scatter([p[0] for p in pts], [p[1] for p in pts], s=10,
+                               color=colors[fam], label=fam)
+            ax.set_title("%s: %s vs %s" % (var, col, bname), fontsize=9)
+            if ax.collections:
+                drawn += 1
+                lo = min(min(c.get_offsets()[:, 0]) for c in ax.collections)
+                hi = max(max(c.get_offsets()[:, 0]) for c in ax.collections)
+                ax.plot([lo, hi], [lo, hi], "k--", linewidth=0.8, label="= bound")
+                loglog(ax, bname, col)
+            else:
+                ax.text(0.5, 0.5, "no %s recorded\n(zero or absent in every run)" % col,
+                        ha="center", va="center", transform=ax.transAxes, fontsize=8)
+                ax.set_xticks([])
+                ax.set_yticks([])
     if drawn == 0:
         plt.close(fig)
         return "events_vs_bounds: skipped (all event counters zero or absent)"
+    # One legend for the whole figure (the families' colours are shared),
+    # to the right of the last column.
+    handles = [Line2D([], [], marker="o", linestyle="", color=colors[f], label=f) for f in fams]
+    handles.append(Line2D([], [], color="k", linestyle="--", linewidth=0.8, label="= bound"))
+    axes[0][-1].legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                       fontsize=8, frameon=False, borderaxespad=0.0)
+    fig.suptitle("Event counts against their bounds, one column per variant", fontsize=11)
     save(fig, outdir, "events_vs_bounds", written)
     return None
 

@@ -1,9 +1,11 @@
 #!/usr/bin/python3
 """report.py: REPORT.md for a wskel-bench run: machine, statuses, fit, plots.
 
-usage: report.py RESULTS.csv PLOTDIR OUT.md [--fit FIT.txt]
+usage: report.py RESULTS.csv PLOTDIR OUT.md [--fit FIT.txt] [--roof ROOF.png]
 The plots are linked relative to OUT.md's folder; only those present are
-embedded (plot.py skips figures whose data are absent).
+embedded (plot.py skips figures whose data are absent).  --roof embeds a
+rendered roof (`make roof`: results/roof/roof_holes.png, of
+results/roof/roof_holes.wpoly) at the end, when the file exists.
 """
 import argparse
 import math
@@ -16,11 +18,14 @@ import fit  # noqa: E402  (the fit, when no fit.txt is given)
 from results import cell, config_key, group_by, k_order, load_csv, loglog_slope  # noqa: E402
 
 FIGURES = [
-    ("time_vs_n", "Construction time against n (log-log; slope in the legend, dashed: NNLS model)"),
-    ("memory_vs_n", "Peak tracked bytes and peak RSS against n"),
-    ("k_effect", "Time and peak memory against k at fixed n and r"),
-    ("k_tradeoff", "Time against peak memory, points labelled by k"),
-    ("events_vs_bounds", "Event counts against their bounds (switch: n r, start: r^2)"),
+    ("time_vs_n", "Construction time against n, one panel per family (log-log; slope in "
+     "the legend, dashed: the NNLS model of fit.py)"),
+    ("memory_vs_n", "Peak tracked bytes (solid) and peak RSS (dotted) against n, one panel "
+     "per family"),
+    ("k_effect", "The k tradeoff per family: time and peak memory against k at fixed n and r"),
+    ("k_tradeoff", "Time against peak memory per family, points labelled by k"),
+    ("events_vs_bounds", "Event counts against their bounds (switch: n r, start: r^2), one "
+     "column per variant"),
 ]
 
 
@@ -81,6 +86,7 @@ def main():
     ap.add_argument("plotdir")
     ap.add_argument("out")
     ap.add_argument("--fit", help="fit.py output to embed (recomputed if absent)")
+    ap.add_argument("--roof", help="a rendered roof PNG to embed (make roof)")
     args = ap.parse_args()
     comments, rows = load_csv(args.csv)
     outdir = os.path.dirname(os.path.abspath(args.out))
@@ -139,6 +145,19 @@ def main():
             lines.append("")
             lines.append("![%s](%s) ([SVG](%s))" % (name, rel, rel[:-4] + ".svg"))
             lines.append("")
+    if args.roof and os.path.exists(args.roof):
+        rel = os.path.relpath(os.path.abspath(args.roof), outdir)
+        src = os.path.splitext(args.roof)[0] + ".wpoly"
+        lines.append("## A roof")
+        lines.append("")
+        lines.append("The roof (the skeleton lifted by its time t, coloured by height, arcs "
+                     "dark) of a polygon with holes%s, rendered by `make roof` "
+                     "(`scripts/render.py`, VTK under xvfb-run)." %
+                     (" (`%s`)" % os.path.relpath(os.path.abspath(src), outdir)
+                      if os.path.exists(src) else ""))
+        lines.append("")
+        lines.append("![roof of a polygon with holes](%s)" % rel)
+        lines.append("")
     with open(args.out, "w") as f:
         f.write("\n".join(lines) + "\n")
     print("wrote", args.out)

@@ -5,7 +5,11 @@
     None, columns found by name), the configuration key, k order, slope;
   - fit.py recovers the exact coefficients of rows made from its own model;
   - plot.py writes its PNGs from a CSV and a fit.json, draws the model of
-    the fit.json (not a refit), and leaves absent counters out;
+    the fit.json (not a refit) dashed beside its data in the data's colour,
+    leaves absent counters out, puts at most MAX_LINES data series in a
+    panel (splitting a family's panel when there are more), one panel per
+    family, and every legend beside its panel, clear of the data;
+  - report.py embeds the figures and, with --roof, the rendered roof;
   - regress.py passes identical runs and fails on a changed counter, where
     an empty cell equals only an empty cell;
   - large_report.py (scripts/perf_large.sh's report): the exponent, time /
@@ -289,18 +293,27 @@ def test_plot_draws_the_given_fit():
     plt.close("all")
 
 
+def axes_titled(fig, prefix):
+    return [ax for ax in fig.axes if ax.get_visible() and ax.get_title().startswith(prefix)]
+
+
 def test_plot_skips_absent_counters():
     import plot
     import matplotlib.pyplot as plt
     _, rows = results.load_csv(write_csv("events.csv", sweep_rows()))
     figs, note = capture_figures(plot.plot_events, rows, TMP, [])
     assert note is None, note
-    switch, _, every = figs["events_vs_bounds"].axes
+    fig = figs["events_vs_bounds"]
     labels = lambda ax: sorted(c.get_label() for c in ax.collections)  # noqa: E731
-    # naive has no switch_events (empty cells): no naive points, not zeros.
-    assert labels(switch) == ["arrangement crossing", "arrangement star"], labels(switch)
-    assert "naive star" in labels(every), labels(every)
-    naive = [c for c in every.collections if c.get_label() == "naive star"][0]
+    # One column per variant, one colour per family.  naive has no
+    # switch_events (empty cells): its panel has no points, not zeros.
+    (switch,) = axes_titled(fig, "arrangement: switch_events")
+    assert labels(switch) == ["crossing", "star"], labels(switch)
+    (nswitch,) = axes_titled(fig, "naive: switch_events")
+    assert labels(nswitch) == [], labels(nswitch)
+    (every,) = axes_titled(fig, "naive: all events")
+    assert "star" in labels(every), labels(every)
+    naive = [c for c in every.collections if c.get_label() == "star"][0]
     want = sorted(r["edge_events"] + r["split_events"] + r["multi_split_events"]
                   for r in rows if r["variant"] == "naive" and r["family"] == "star")
     assert sorted(naive.get_offsets()[:, 1]) == want
@@ -308,6 +321,111 @@ def test_plot_skips_absent_counters():
     figs, note = capture_figures(plot.plot_events, nocount, TMP, [])
     assert not figs and "skipped" in note, note
     plt.close("all")
+
+
+def many_variant_rows():
+    """Eight variants on one family: more than a panel may hold."""
+    rows = []
+    for i in range(8):
+        for n in (200, 1000, 3000):
+            rows.append(make_row("v%d" % i, "star", n, wall=(i + 1) * 1e-9 * n * n))
+    return rows
+
+
+def data_lines(ax):
+    """The data series of a panel: solid or dotted lines (dashed ones are
+    models or the bound)."""
+    return [ln for ln in ax.get_lines() if ln.get_linestyle() in ("-", ":")]
+
+
+def test_plot_small_multiples_at_most_six_lines():
+    import plot
+    import matplotlib.pyplot as plt
+    _, rows = results.load_csv(write_csv("many.csv", many_variant_rows() + sweep_rows()))
+    for fn, name, args in ((plot.plot_time_vs_n, "time_vs_n", ({},)),
+                           (plot.plot_memory_vs_n, "memory_vs_n", ())):
+        figs, _ = capture_figures(fn, rows, TMP, [], *args)
+        axes = [ax for ax in figs[name].axes if ax.get_visible()]
+        counts = [len(data_lines(ax)) for ax in axes]
+        assert max(counts) <= plot.MAX_LINES, (name, counts)
+        star = [ax for ax in axes if ax.get_title().startswith("star")]
+        # time: 10 series on star (8 + naive + arrangement) over 2 panels;
+        # memory: 2 per variant (tracked and RSS), 20 over 4 panels.
+        want = {"time_vs_n": 2, "memory_vs_n": 4}[name]
+        assert len(star) == want, (name, [ax.get_title() for ax in star])
+        assert sum(len(data_lines(ax)) for ax in star) == want * 5, (name, counts)
+        # One panel per family and weight mode otherwise: crossing has one.
+        assert len([ax for ax in axes if ax.get_title().startswith("crossing")]) == 1
+    plt.close("all")
+
+
+def test_plot_model_dashed_beside_its_data():
+    import plot
+    import matplotlib.pyplot as plt
+    path = write_csv("plotmodel.csv", sweep_rows())
+    _, rows = results.load_csv(path)
+    fitj = os.path.join(TMP, "plotmodel.json")
+    rc, text = run("fit.py", path, "--json", fitj)
+    assert rc == 0, text
+    fits = json.load(open(fitj))
+    figs, _ = capture_figures(plot.plot_time_vs_n, rows, TMP, [], fits)
+    for ax in figs["time_vs_n"].axes:
+        data = data_lines(ax)
+        dashed = [ln for ln in ax.get_lines() if ln.get_linestyle() == "--"]
+        # Every data line (naive and arrangement here) has its model, in its colour.
+        assert len(data) == len(dashed) == 2, (ax.get_title(), len(data), len(dashed))
+        assert sorted(str(d.get_color()) for d in data) == \
+            sorted(str(d.get_color()) for d in dashed)
+    plt.close("all")
+
+
+def test_plot_legends_cover_no_data():
+    import plot
+    import matplotlib.pyplot as plt
+    _, rows = results.load_csv(write_csv("legend.csv", sweep_rows()))
+    figs = {}
+    for fn, args in ((plot.plot_time_vs_n, ({},)), (plot.plot_memory_vs_n, ()),
+                     (plot.plot_k, ()), (plot.plot_events, ())):
+        f, _ = capture_figures(fn, rows, TMP, [], *args)
+        figs.update(f)
+    assert set(figs) == {"time_vs_n", "memory_vs_n", "k_effect", "k_tradeoff",
+                         "events_vs_bounds"}, set(figs)
+    for name, fig in figs.items():
+        fig.canvas.draw()
+        seen = 0
+        for ax in fig.axes:
+            leg = ax.get_legend()
+            if leg is None:
+                continue
+            seen += 1
+            a, b = ax.get_window_extent(), leg.get_window_extent()
+            assert b.x0 >= a.x1 - 1, (name, ax.get_title(), a, b)
+        assert seen >= 1, name
+    # The k figures: one column per family (star, crossing).
+    titles = sorted(ax.get_title() for ax in figs["k_effect"].axes if ax.get_visible())
+    assert titles == ["crossing: peak memory against k", "crossing: time against k",
+                      "star: peak memory against k", "star: time against k"], titles
+    plt.close("all")
+
+
+def test_report_embeds_the_roof():
+    path = write_csv("report.csv", sweep_rows())
+    plots = os.path.join(TMP, "report_plots")
+    rc, text = run("plot.py", path, plots)
+    assert rc == 0, text
+    roof = os.path.join(TMP, "roofdir", "roof.png")
+    os.makedirs(os.path.dirname(roof), exist_ok=True)
+    shutil.copy(os.path.join(ROOT, "results", "roof", "roof_holes.png"), roof)
+    out = os.path.join(TMP, "out", "REPORT.md")
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    rc, text = run("report.py", path, plots, out, "--roof", roof)
+    assert rc == 0, text
+    md = open(out).read()
+    assert "## A roof" in md and "](../roofdir/roof.png)" in md, md[-600:]
+    assert "](../report_plots/k_effect.png)" in md
+    # Without --roof (or with a missing file) no roof section.
+    rc, text = run("report.py", path, plots, out, "--roof", roof + ".absent")
+    assert rc == 0 and "## A roof" not in open(out).read(), text
 
 
 # ---------------------------------------------------------------- regress.py
