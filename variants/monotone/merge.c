@@ -74,6 +74,22 @@ static bool coplanar(const mono *M, uint32_t a, uint32_t b) {
     return fabs(A->c - B->c) <= M->eps_d;
 }
 
+/* Edges a and b (of different chains, so they meet at v_w or v_e) meet at a
+** vertex the wavefront treats as straight (equal weights, directions within
+** WK_PARALLEL_SIN: kinetics.c): *s is that vertex.  The reference moves it
+** along the normal, so M' between their faces is that normal line, however
+** the rounding of the two nearly equal gradients points their bisector. */
+static bool straight_pair(const mono *M, uint32_t a, uint32_t b, uint32_t *s) {
+    const wk_polygon *P = M->P;
+    uint32_t in = a, out = b;
+    if (wk_polygon_next(P, b) == a) in = b, out = a;
+    else if (wk_polygon_next(P, a) != b) return false;
+    wk_point v;
+    if (wk_vertex_velocity(&M->L[in], &M->L[out], &v) != WK_VEL_STRAIGHT) return false;
+    *s = out; /* edge out starts at the shared vertex */
+    return true;
+}
+
 static bool excluded(const walk *W, uint32_t c, uint32_t v) {
     for (uint32_t i = 0; i < W->n_excl; i++)
         if (W->excl_c[i] == c && W->excl_v[i] == v) return true;
@@ -104,11 +120,36 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
     }
     double den = cross(D, W->dir);
     wk_point Ap = sub(A, W->p);
+    uint32_t beyond = left_wall ? T->ein : T->eout, sv;
+    if (fabs(den) <= WK_PARALLEL_SIN && fabs(cross(D, Ap)) <= M->eps_d &&
+        straight_pair(M, beyond, W->face[1 - c], &sv)) {
+        /* The ray runs along this trace into the face of an edge that is
+        ** straight with the other chain's face (the two edges at v_w or v_e,
+        ** up to 1e-9 rad apart): that is a stress finding where the crossing
+        ** of two lines 1.3e-12 rad apart came out 2.2e-5 off
+        ** (s6-c02038-nearly_straight).  M' leaves the trace where the
+        ** normal through the straight vertex crosses it. */
+        const wk_offset_line *L = &M->L[beyond];
+        wk_point S = wk_mono_vertex(M, sv), nrm = {L->nx, L->ny};
+        double dd = cross(W->dir, nrm);
+        if (!(fabs(dd) > WK_PARALLEL_SIN)) return;
+        double lambda = cross(sub(S, W->p), nrm) / dd;
+        wk_point X = {W->p.x + lambda * W->dir.x, W->p.y + lambda * W->dir.y};
+        double mu = dot(sub(X, A), D);
+        if (lambda < -M->eps_d || mu < -M->eps_d || mu > len + M->eps_d) return;
+        if (lambda < best->lambda) {
+            best->lambda = lambda < 0 ? 0 : lambda;
+            best->mu = mu < 0 ? 0 : mu > len ? len : mu;
+            best->chain = c;
+            best->trace = v;
+            best->face = beyond;
+        }
+        return;
+    }
     if (fabs(den) <= WK_MONO_RAY_PARALLEL_SIN && fabs(cross(D, Ap)) <= M->eps_d) {
         /* The ray runs along this trace.  If the face beyond is coplanar with
         ** the other chain's face, M' really continues between those two
         ** (the trace is where that coincidence starts): cross here. */
-        uint32_t beyond = left_wall ? T->ein : T->eout;
         if (!coplanar(M, beyond, W->face[1 - c])) return;
         double mu = -dot(D, Ap), lambda = 0;
         if (mu < -M->eps_d) { /* ahead of us: where the trace starts */
