@@ -1,5 +1,6 @@
 /*
-** polygon_read.c: the polygon readers, .wpoly and GraphML.
+** polygon_read.c: the polygon readers, .wpoly and GraphML, and the choice of
+** reader by content (GeoJSON and WKT: polygon_read_gis.c).
 **
 ** .wpoly, line oriented:
 **     # comment lines start with '#' (after optional blanks)
@@ -48,7 +49,7 @@
 ** would mean a process-wide xmlMemSetup, i.e. a mutable global); the tree is
 ** freed before the reader returns, so it never outlives a call.
 */
-#include "wskel.h"
+#include "read_text.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -988,10 +989,12 @@ done:
     return st;
 }
 
-/* The bytes of a GraphML document: strict UTF-8 throughout, no NUL, no
-** control character but tab, LF and CR (see the header).  WK_OK or
-** WK_EINPUT naming the line and column (in bytes) of the first fault. */
-static wk_status graphml_bytes(wk_run *R, const char *buf, size_t len, const char *name) {
+/* The bytes of a GraphML, GeoJSON or WKT document: strict UTF-8 throughout,
+** no NUL, no control character but tab, LF and CR (see the header).  WK_OK
+** or WK_EINPUT naming the line and column (in bytes) of the first fault;
+** format names the format in the message (read_text.h). */
+wk_status wk_read_utf8_bytes(wk_run *R, const char *buf, size_t len, const char *name,
+                             const char *format) {
     const unsigned char *u = (const unsigned char *)buf;
     if (is_utf16_bom(buf, len)) return utf16_refused(R, name);
     long line = 1;
@@ -1015,7 +1018,8 @@ static wk_status graphml_bytes(wk_run *R, const char *buf, size_t len, const cha
         size_t k = utf8_seq(u + i, len - i, &cp);
         char why[160];
         if (k == 0)
-            snprintf(why, sizeof why, "byte 0x%02X is not UTF-8 (GraphML input must be UTF-8)", c);
+            snprintf(why, sizeof why, "byte 0x%02X is not UTF-8 (%s input must be UTF-8)", c,
+                     format);
         else if (is_control(cp))
             describe_control(cp, why, sizeof why);
         else {
@@ -1043,7 +1047,7 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
     if (!name) name = "";
     if (len > INT_MAX)
         return WK_FAIL(R, WK_EINPUT, name, 0, "GraphML input too large (%zu bytes)", len);
-    wk_status bytes = graphml_bytes(R, buf, len, name);
+    wk_status bytes = wk_read_utf8_bytes(R, buf, len, name, "GraphML");
     if (bytes != WK_OK) return bytes;
     bool first_failure = R->err.code == WK_OK;
     xmlParserCtxtPtr ctx = xmlNewParserCtxt();
@@ -1107,8 +1111,13 @@ wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out) {
     if ((unsigned char)c[0] == 0xEF && (unsigned char)c[1] == 0xBB && (unsigned char)c[2] == 0xBF)
         c += 3;
     while (is_blank(*c) || *c == '\r' || *c == '\n') c++;
+    /* GeoJSON at '{', WKT at a letter (a .wpoly starts with '#' or a count) */
     if (*c == '<')
         st = wk_polygon_read_graphml(R, t.buf, t.len, name, out);
+    else if (*c == '{')
+        st = wk_polygon_read_geojson(R, t.buf, t.len, name, out);
+    else if ((*c >= 'A' && *c <= 'Z') || (*c >= 'a' && *c <= 'z'))
+        st = wk_polygon_read_wkt(R, t.buf, t.len, name, out);
     else
         st = parse_wpoly(R, &t, name, out);
     text_free(R, &t);

@@ -411,11 +411,19 @@ wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const d
 wk_status wk_polygon_from_rings(wk_run *R, uint32_t n_rings, const uint32_t *ring_size,
                                 const double *x, const double *y, const double *w,
                                 const char *name, const long *lines, wk_polygon **out);
-/* Read a .wpoly or GraphML file (chosen by content; "-" reads stdin). */
+/* Read a .wpoly, GraphML, GeoJSON or WKT file (chosen by content: '<'
+** GraphML, '{' GeoJSON, a letter WKT, else .wpoly; "-" reads stdin).
+** GeoJSON and WKT may hold several polygons: R->opt.part chooses one. */
 wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out);
 wk_status wk_polygon_read_wpoly(wk_run *R, FILE *f, const char *name, wk_polygon **out);
 wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const char *name,
                                   wk_polygon **out);
+/* GeoJSON and WKT from memory (engine/polygon_read_gis.c: the accepted
+** forms, the weights property, --part).  buf[len] need not be NUL. */
+wk_status wk_polygon_read_geojson(wk_run *R, const char *buf, size_t len, const char *name,
+                                  wk_polygon **out);
+wk_status wk_polygon_read_wkt(wk_run *R, const char *buf, size_t len, const char *name,
+                              wk_polygon **out);
 /* Write .wpoly (counter-clockwise, as stored). */
 wk_status wk_polygon_write_wpoly(wk_run *R, FILE *f, const wk_polygon *P);
 void wk_polygon_free(wk_run *R, wk_polygon *P);
