@@ -228,7 +228,7 @@ int main(int argc, char **argv) {
     double *offsets = NULL;
     uint32_t n_offsets = 0;
     if (offsets_arg && parse_offsets(offsets_arg, &offsets, &n_offsets) != 0)
-        return usage_error("--offset must be a comma-separated list of times >= 0 (got '%s')",
+        return usage_error("--offset/--offsets must be a comma-separated list of times >= 0 (got '%s')",
                            offsets_arg);
 
     wk_run R;
