@@ -1120,6 +1120,15 @@ wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out) {
         st = wk_polygon_read_wkt(R, t.buf, t.len, name, out);
     else
         st = parse_wpoly(R, &t, name, out);
+    bool single = *c != '{' && !((*c >= 'A' && *c <= 'Z') || (*c >= 'a' && *c <= 'z'));
     text_free(R, &t);
+    /* .wpoly and GraphML hold one polygon: part 0 is it, any other is refused
+    ** as the GeoJSON and WKT readers refuse a part beyond their count. */
+    if (st == WK_OK && single && R->opt.part != WK_NONE && R->opt.part > 0) {
+        wk_polygon_free(R, *out);
+        *out = NULL;
+        st = WK_FAIL(R, WK_EINPUT, name, 0,
+                     "--part %u, but the input holds 1 polygon (parts count from 0)", R->opt.part);
+    }
     return st;
 }
