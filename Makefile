@@ -119,6 +119,7 @@ test-py: all
 	$(PY) tests/test_holes.py
 	$(PY) tests/test_motorcycle.py
 	$(PY) tests/test_cgal_agreement.py
+	$(PY) tests/test_offset_cgal.py
 	$(PY) tests/test_scripts.py
 	$(MAKE) --no-print-directory stress-quick
 
