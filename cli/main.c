@@ -15,6 +15,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static const char usage_text[] =
     "usage: wskel [options] INPUT\n"
@@ -49,6 +50,7 @@ static const char usage_text[] =
     "  --check-tol REL    the validator's tolerance as a fraction of the bounding-box\n"
     "                     diagonal (default 1e-6; smaller is stricter)\n"
     "  --stats            print counters, time and peak tracked bytes to stderr\n"
+    "                     (with --offset and geojson/wkt also the offsets' time)\n"
     "  --collinear RULE   parallel edges of different weight meeting collinearly:\n"
     "                     'lower' (default, the lower weight edge survives, as in\n"
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
@@ -246,6 +248,7 @@ int main(int argc, char **argv) {
     double time_s = 0;
     size_t peak = 0;
     wk_offset_set **sets = NULL;
+    double offset_s = -1; /* time of the wk_offset calls (--stats), < 0: none */
 
     if (wk_polygon_read_file(&R, input, &P) != WK_OK) {
         rc = report(&R, verbose);
@@ -282,8 +285,12 @@ int main(int argc, char **argv) {
     if (offset_polygons) {
         sets = calloc(n_offsets ? n_offsets : 1, sizeof *sets);
         if (!sets) st = WK_FAIL(&R, WK_ENOMEM, NULL, 0, "out of memory (offset list)");
+        struct timespec t0, t1;
+        clock_gettime(CLOCK_MONOTONIC, &t0);
         for (uint32_t j = 0; j < n_offsets && st == WK_OK; j++)
             st = wk_offset(&R, P, S, offsets[j], &sets[j]);
+        clock_gettime(CLOCK_MONOTONIC, &t1);
+        offset_s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
         if (st == WK_OK)
             st = !strcmp(format, "wkt") ? wk_write_offsets_wkt(&R, out.f, sets, n_offsets)
                                         : wk_write_offsets_geojson(&R, out.f, P, sets, n_offsets);
@@ -303,6 +310,8 @@ int main(int argc, char **argv) {
         fprintf(stderr, "variant %s  n %u  r %u  nodes %u  arcs %u\n", wk_variant_name(V), P->n, P->r,
                 S->n_nodes, S->n_arcs);
         fprintf(stderr, "time_s %.6f  peak_bytes %zu\n", time_s, peak);
+        if (offset_s >= 0)
+            fprintf(stderr, "offset_time_s %.6f  (%u offset times)\n", offset_s, n_offsets);
         for (uint32_t j = 0; j < wk_counter_count(V); j++)
             if (R.counters.c[j])
                 fprintf(stderr, "%-32s %llu\n", wk_counter_def_at(V, j)->name,
