@@ -406,3 +406,48 @@ Test(offset, allocation_failures) {
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
 }
+
+/* Times exactly at node times (the degenerate case): the offset is computed
+** (no WK_EALGO), its vertices are inside P, its area lies between the areas
+** just before and just after, and rings keep their orientation. */
+Test(offset, at_node_times) {
+    wk_run R;
+    wk_run_init(&R);
+    static const char *const fam[] = {"star", "comb", "rectilinear", "spiral", "holes", "convex"};
+    uint32_t cases = 0;
+    for (size_t f = 0; f < sizeof fam / sizeof *fam; f++)
+        for (uint64_t seed = 1; seed <= 2; seed++) {
+            wk_polygon *P = NULL;
+            uint32_t holes = !strcmp(fam[f], "holes") || !strcmp(fam[f], "convex") ? 2 : 0;
+            if (gen_holes(&R, fam[f], 24, -1, holes, seed, seed == 2 ? "int" : NULL, &P) != WK_OK) {
+                wk_run_clear_error(&R);
+                continue;
+            }
+            wk_skeleton *S = solve(&R, P);
+            double T = max_time(S);
+            for (uint32_t i = P->n; i < S->n_nodes; i++) {
+                double t = S->nodes[i].t;
+                wk_offset_set *O = offset(&R, P, S, t);
+                wk_offset_set *lo = offset(&R, P, S, fmax(0, t - 1e-7 * T));
+                wk_offset_set *hi = offset(&R, P, S, t + 1e-7 * T);
+                double a = set_area(O), al = set_area(lo), ah = set_area(hi);
+                double slack = 1e-9 * wk_polygon_area(P);
+                cr_assert(a <= al + slack && a >= ah - slack,
+                          "%s seed %llu node %u t=%.17g: area %g not within [%g, %g]", fam[f],
+                          (unsigned long long)seed, i, t, a, ah, al);
+                for (uint32_t s = 0; s < O->ring_start[O->n_rings]; s++)
+                    cr_assert_geq(inside_polygon(P, O->p[s]), t > 0 ? 1 : 0);
+                for (uint32_t c = 0; c < O->n_polygons; c++)
+                    for (uint32_t k = O->polygon_start[c]; k < O->polygon_start[c + 1]; k++)
+                        cr_assert((wk_offset_ring_area(O, k) > 0) == (k == O->polygon_start[c]));
+                wk_offset_set_free(&R, O);
+                wk_offset_set_free(&R, lo);
+                wk_offset_set_free(&R, hi);
+                cases++;
+            }
+            wk_skeleton_free(&R, S);
+            wk_polygon_free(&R, P);
+        }
+    cr_assert_gt(cases, 100);
+    ASSERT_CLEAN_CLOSE(R);
+}
