@@ -167,7 +167,7 @@ static void describe_control(uint32_t cp, char *why, size_t size) {
 ** newlines, and quote the input, as do ours): runs of blanks and control
 ** characters become one space, bytes that are no UTF-8 (a quote cut inside
 ** a character) '?', and no blank is left at either end. */
-static void clean_message(char *buf, size_t size, const char *m) {
+void wk_read_clean_message(char *buf, size_t size, const char *m) {
     const unsigned char *u = (const unsigned char *)m;
     size_t len = strlen(m), n = 0;
     bool space = false;
@@ -601,7 +601,7 @@ static int key_number(xmlNode *e, const gkey *K, double *v, xmlNode **where, cha
     bool ok = parse_text_number(t.s, v);
     if (!ok) {
         char one_line[64];
-        clean_message(one_line, sizeof one_line, (const char *)t.s);
+        wk_read_clean_message(one_line, sizeof one_line, (const char *)t.s);
         clip_utf8(bad, bad_size, one_line, 40);
     }
     xstr_free(&t);
@@ -1066,7 +1066,7 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
         char msg[256] = "not well-formed";
         long line = 0;
         if (err && err->message) {
-            clean_message(msg, sizeof msg, err->message);
+            wk_read_clean_message(msg, sizeof msg, err->message);
             line = err->line;
         }
         st = WK_FAIL(R, WK_EINPUT, name, line, "XML error: %s", msg);
@@ -1087,7 +1087,7 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
     if (st != WK_OK && first_failure && R->err.code != WK_OK) {
         /* Messages quote the document (ids, values): one line of UTF-8. */
         char tmp[sizeof R->err.msg];
-        clean_message(tmp, sizeof tmp, R->err.msg);
+        wk_read_clean_message(tmp, sizeof tmp, R->err.msg);
         memcpy(R->err.msg, tmp, sizeof tmp);
     }
     return st;

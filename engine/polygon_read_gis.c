@@ -88,16 +88,19 @@ static wk_status part_build(wk_run *R, part_arrays *A, const char *name, bool li
                                  A->weighted ? A->w : NULL, name, lines ? A->line : NULL, out);
 }
 
-/* The part to take, or a failure naming the count. */
-static wk_status choose_part(wk_run *R, const char *name, uint32_t count, const char *what) {
+/* The part to take, or a failure naming the count.  line: where the second
+** polygon begins (the refusal of several points there), or the last line
+** when there is none; 0 when unknown (GeoJSON). */
+static wk_status choose_part(wk_run *R, const char *name, uint32_t count, const char *what,
+                             long line) {
     uint32_t part = R->opt.part;
-    if (count == 0) return WK_FAIL(R, WK_EINPUT, name, 0, "no polygon in the input (%s)", what);
+    if (count == 0) return WK_FAIL(R, WK_EINPUT, name, line, "no polygon in the input (%s)", what);
     if (part == WK_NONE && count > 1)
-        return WK_FAIL(R, WK_EINPUT, name, 0,
+        return WK_FAIL(R, WK_EINPUT, name, line,
                        "the input holds %u polygons (%s): choose one with --part I (0 to %u)",
                        count, what, count - 1);
     if (part != WK_NONE && part >= count)
-        return WK_FAIL(R, WK_EINPUT, name, 0,
+        return WK_FAIL(R, WK_EINPUT, name, line,
                        "--part %u, but the input holds %u polygon%s (%s; parts count from 0)", part,
                        count, count == 1 ? "" : "s", what);
     return WK_OK;
@@ -275,18 +278,26 @@ wk_status wk_polygon_read_geojson(wk_run *R, const char *buf, size_t len, const 
     /* Duplicate keys refused: a document must not be read one of two ways. */
     json_t *root = json_loadb(buf, len, JSON_REJECT_DUPLICATES | JSON_DECODE_INT_AS_REAL, &jerr);
     if (!root) {
-        char text[JSON_ERROR_TEXT_LENGTH + 1];
-        snprintf(text, sizeof text, "%s", jerr.text);
+        char text[JSON_ERROR_TEXT_LENGTH + 1]; /* jansson quotes the input: clean it */
+        wk_read_clean_message(text, sizeof text, jerr.text);
         return WK_FAIL(R, WK_EINPUT, name, jerr.line > 0 ? jerr.line : 0, "JSON error: %s", text);
     }
+    bool first_failure = R->err.code == WK_OK;
     part_arrays A = {0};
     gj_walk W = {0, R->opt.part == WK_NONE ? 0 : R->opt.part, {NULL, NULL, ""}};
     wk_status st = gj_top(R, name, &W, root);
-    if (st == WK_OK) st = choose_part(R, name, W.count, "GeoJSON polygons, in document order");
+    if (st == WK_OK) st = choose_part(R, name, W.count, "GeoJSON polygons, in document order", 0);
     if (st == WK_OK) st = gj_collect(R, name, &W.kept, &A);
     if (st == WK_OK) st = part_build(R, &A, name, false, out);
     part_free(R, &A);
     json_decref(root);
+    if (st != WK_OK && first_failure && R->err.code != WK_OK) {
+        /* Messages quote the document (a type name may hold any escaped
+        ** character, a quote may be cut inside one): one line of UTF-8. */
+        char tmp[sizeof R->err.msg];
+        wk_read_clean_message(tmp, sizeof tmp, R->err.msg);
+        memcpy(R->err.msg, tmp, sizeof tmp);
+    }
     return st;
 }
 
@@ -300,6 +311,7 @@ typedef struct wkt {
     wk_run *R;
     uint32_t count, want; /* polygons seen; the one to keep */
     part_arrays *A;
+    long second_line;     /* where the second polygon begins */
 } wkt;
 
 static void wkt_skip(wkt *T) {
@@ -376,6 +388,7 @@ static wk_status wkt_number(wkt *T, double *v) {
 /* dims: 2 + Z + M of the geometry's tag; 0 untagged (2 or 3 numbers, Z). */
 static wk_status wkt_polygon_text(wkt *T, int dims, bool has_m) {
     bool keep = T->count == T->want;
+    if (T->count == 1) T->second_line = (wkt_skip(T), T->line);
     T->count++;
     if (wkt_word(T, "EMPTY"))
         return WK_FAIL(T->R, WK_EINPUT, T->name, T->line,
@@ -449,7 +462,7 @@ wk_status wk_polygon_read_wkt(wk_run *R, const char *buf, size_t len, const char
     if (!name) name = "";
     if (wk_read_utf8_bytes(R, buf, len, name, "WKT") != WK_OK) return R->err.code;
     part_arrays A = {0};
-    wkt T = {buf, len, 0, 1, name, R, 0, R->opt.part == WK_NONE ? 0 : R->opt.part, &A};
+    wkt T = {buf, len, 0, 1, name, R, 0, R->opt.part == WK_NONE ? 0 : R->opt.part, &A, 0};
     wk_status st = WK_OK;
     if (len >= 3 && (unsigned char)buf[0] == 0xEF && (unsigned char)buf[1] == 0xBB &&
         (unsigned char)buf[2] == 0xBF)
@@ -477,7 +490,8 @@ wk_status wk_polygon_read_wkt(wk_run *R, const char *buf, size_t len, const char
             st = wkt_expected(&T, "POLYGON or MULTIPOLYGON");
         }
     }
-    if (st == WK_OK) st = choose_part(R, name, T.count, "WKT polygons, in document order");
+    if (st == WK_OK) st = choose_part(R, name, T.count, "WKT polygons, in document order",
+                                          T.count > 1 ? T.second_line : T.line);
     if (st == WK_OK) st = part_build(R, &A, name, true, out);
     part_free(R, &A);
     return st;

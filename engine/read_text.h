@@ -15,4 +15,10 @@
 wk_status wk_read_utf8_bytes(wk_run *R, const char *buf, size_t len, const char *name,
                              const char *format);
 
+/* Text m as one line of UTF-8 text in buf (for messages that quote the
+** input, as libxml2's and jansson's do): runs of blanks and control
+** characters become one space, bytes that are no UTF-8 (a quote cut inside a
+** character) '?', and no blank is left at either end. */
+void wk_read_clean_message(char *buf, size_t size, const char *m);
+
 #endif
