@@ -610,7 +610,9 @@ wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, ui
 ** (an edge, a component) is gone, and where a split happens at t the two
 ** parts are two components touching at one point; repeated consecutive
 ** points are merged and rings left with fewer than 3 points or zero area
-** dropped.  t = 0 gives P itself (vertices exactly P's).  Deterministic. */
+** dropped.  t = 0 gives P itself: P's region, its vertices exactly P's (a
+** vertex between collinear edges is left out when the collinear rule
+** removed one of the edges at t = 0: its face is empty).  Deterministic. */
 typedef struct wk_offset_set {
     double t;
     uint32_t n_polygons;     /* connected components of the wavefront at t */
