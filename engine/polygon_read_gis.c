@@ -25,7 +25,8 @@
 **
 ** WKT (a small reader, so that every message has its line): any number of
 ** POLYGON and MULTIPOLYGON geometries, keywords in any case, an optional
-** dimension Z, M or ZM; points of 2, 3 (Z or M as tagged; untagged: Z) or
+** dimension Z, M or ZM, each optionally after PostGIS's EWKT "SRID=n;"
+** (ignored); points of 2, 3 (Z or M as tagged; untagged: Z) or
 ** 4 numbers; Z is ignored and M is the weight of the edge from that point to
 ** the next (the closing point's M is ignored).  Rings are closed as in
 ** GeoJSON.  EMPTY geometries are refused (no skeleton to compute).  Numbers
@@ -470,6 +471,20 @@ wk_status wk_polygon_read_wkt(wk_run *R, const char *buf, size_t len, const char
     while (st == WK_OK && (wkt_skip(&T), T.i < T.len)) {
         int dims;
         bool has_m;
+        if (wkt_word(&T, "SRID")) { /* EWKT (PostGIS): SRID=n; before a geometry, ignored */
+            if (!wkt_char(&T, '=')) {
+                st = wkt_expected(&T, "'=' after SRID");
+                break;
+            }
+            wkt_skip(&T);
+            size_t d = T.i;
+            while (T.i < T.len && T.s[T.i] >= '0' && T.s[T.i] <= '9') T.i++;
+            if (T.i == d || !wkt_char(&T, ';')) {
+                st = wkt_expected(&T, "SRID=<digits>;");
+                break;
+            }
+            continue;
+        }
         if (wkt_word(&T, "POLYGON")) {
             wkt_dims(&T, &dims, &has_m);
             st = wkt_polygon_text(&T, dims, has_m);

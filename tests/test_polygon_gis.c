@@ -81,6 +81,13 @@ Test(polygon_gis, wkt_parts_weights_lines) {
     err_text(&R, msg, sizeof msg);
     cr_assert(strstr(msg, "(line 1)") && strstr(msg, "(line 3)"), "%s", msg);
     wk_run_clear_error(&R);
+    /* EWKT's SRID prefix is skipped; a malformed one refused */
+    cr_assert_eq(wkt(&R, "SRID=4326;POLYGON((0 0,1 0,0 1,0 0))", &P), WK_OK);
+    wk_polygon_free(&R, P);
+    cr_assert_eq(wkt(&R, "SRID=x;POLYGON((0 0,1 0,0 1,0 0))", &P), WK_EINPUT);
+    err_text(&R, msg, sizeof msg);
+    cr_assert(strstr(msg, "SRID=<digits>;"), "%s", msg);
+    wk_run_clear_error(&R);
     /* a hole inside, clockwise or not */
     cr_assert_eq(wkt(&R, "POLYGON((0 0,10 0,10 10,0 10,0 0),(4 4,6 4,6 6,4 6,4 4))", &P), WK_OK);
     cr_assert_eq(P->n_rings, 2);
