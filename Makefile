@@ -22,6 +22,11 @@ XML_CFLAGS := $(shell pkg-config --cflags libxml-2.0 2>/dev/null)
 XML_LIBS   := $(shell pkg-config --libs libxml-2.0 2>/dev/null)
 CFLAGS  += $(XML_CFLAGS)
 LDLIBS  += $(XML_LIBS)
+# GeoJSON reader (engine/polygon_read_gis.c)
+JSON_CFLAGS := $(shell pkg-config --cflags jansson 2>/dev/null)
+JSON_LIBS   := $(shell pkg-config --libs jansson 2>/dev/null)
+CFLAGS  += $(JSON_CFLAGS)
+LDLIBS  += $(JSON_LIBS)
 
 ENGINE_SRC  := $(sort $(wildcard engine/*.c))
 VARIANT_SRC := variants/registry.c $(sort $(wildcard variants/*/*.c))
@@ -132,6 +137,7 @@ test-py: all python
 	$(PY) tests/test_holes.py
 	$(PY) tests/test_motorcycle.py
 	$(PY) tests/test_cgal_agreement.py
+	$(PY) tests/test_offset_cgal.py
 	$(PY) tests/test_scripts.py
 	$(MAKE) --no-print-directory stress-quick
 
@@ -160,13 +166,13 @@ clean:
 # (FUZZ_DIR=DIR puts all of it elsewhere, e.g. out of reach of make clean).
 FUZZ_CC      ?= clang
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS := wpoly graphml variants
+FUZZ_TARGETS := wpoly graphml geojson wkt variants
 FUZZ_DIR     ?= $(B)/fuzz
 BF := $(FUZZ_DIR)
 # The library sources keep -Wall -Wextra without -Werror here: the gcc build
 # (make) is the one whose warnings are errors; the targets themselves have it.
 FUZZ_CFLAGS := $(CSTD) -Wall -Wextra -O1 -g -fno-omit-frame-pointer -fopenmp \
-               -fsanitize=address,undefined -fno-sanitize-recover=all -Iengine -Ivariants $(XML_CFLAGS)
+               -fsanitize=address,undefined -fno-sanitize-recover=all -Iengine -Ivariants $(XML_CFLAGS) $(JSON_CFLAGS)
 .PHONY: fuzz fuzz-build
 # Objects made by the pattern rules below are kept (not intermediate files).
 .SECONDARY: $(LIB_SRC:%.c=$(BF)/%.o) $(FUZZ_TARGETS:%=$(BF)/tests/fuzz/fuzz_%.o)
@@ -180,7 +186,7 @@ $(BF)/tests/fuzz/%.o: tests/fuzz/%.c $(HDRS) $(wildcard tests/fuzz/*.h)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -Werror -fsanitize=fuzzer-no-link -c $< -o $@
 $(BF)/fuzz_%: $(BF)/tests/fuzz/fuzz_%.o $(LIB_SRC:%.c=$(BF)/%.o)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $^ -o $@ -lm -lgmp $(XML_LIBS)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer $^ -o $@ -lm -lgmp $(XML_LIBS) $(JSON_LIBS)
 
 # Benchmark targets (bench, curves, regress) live with the harness.
 -include bench/bench.mk

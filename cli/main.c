@@ -15,13 +15,17 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static const char usage_text[] =
     "usage: wskel [options] INPUT\n"
     "Compute the positively weighted straight skeleton of a simple polygon or a\n"
     "polygon with holes.\n"
     "\n"
-    "INPUT is a .wpoly file or GraphML (detected by content); '-' reads stdin.\n"
+    "INPUT is a .wpoly file, GraphML, GeoJSON or WKT (detected by content); '-'\n"
+    "reads stdin.  GeoJSON: a Polygon, MultiPolygon, Feature or FeatureCollection;\n"
+    "per-edge weights from a Feature's \"weights\" property (one array per ring,\n"
+    "weight i for the edge from vertex i to the next).  WKT: POLYGON or MULTIPOLYGON.\n"
     "  .wpoly: '#' comment lines; first line n; then n lines 'x y [w]' where w\n"
     "  (default 1) weights the edge from this vertex to the next.  Holes follow\n"
     "  as further rings, each its own count line and vertex lines.  Any ring may\n"
@@ -31,15 +35,22 @@ static const char usage_text[] =
     "  --variant V        algorithm (default naive); --list-variants shows all\n"
     "  --k K              arrangement cache size: a positive integer or 'max'\n"
     "                     (default 1; ignored by variants without a cache)\n"
-    "  --format F         json (default), text, svg, obj (roof), vtp (VTK PolyData)\n"
+    "  --format F         json (default), text, svg, obj (roof), vtp (VTK PolyData),\n"
+    "                     geojson, wkt (the skeleton, or with --offset the offsets)\n"
     "  -o FILE            write to FILE instead of stdout (atomically)\n"
-    "  --offsets T1,T2..  svg only: draw offset curves at these times\n"
+    "  --offset T1,T2..   offsets at these times (>= 0; distances for unit weights):\n"
+    "                     with --format geojson or wkt, write the offset polygons\n"
+    "                     (with holes) instead of the skeleton; with svg, draw them\n"
+    "                     as curves over the skeleton.  --offsets is the same option\n"
+    "  --part I           the polygon to use (0-based) when INPUT holds several\n"
+    "                     (a MultiPolygon or several features / WKT polygons)\n"
     "  --check            validate the skeleton, exit 3 and no output if invalid\n"
     "                     (the default; --stats prints the validator's figures)\n"
     "  --no-check         skip the validation (huge inputs, timing runs)\n"
     "  --check-tol REL    the validator's tolerance as a fraction of the bounding-box\n"
     "                     diagonal (default 1e-6; smaller is stricter)\n"
     "  --stats            print counters, time and peak tracked bytes to stderr\n"
+    "                     (with --offset and geojson/wkt also the offsets' time)\n"
     "  --collinear RULE   parallel edges of different weight meeting collinearly:\n"
     "                     'lower' (default, the lower weight edge survives, as in\n"
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
@@ -105,6 +116,7 @@ int main(int argc, char **argv) {
     uint32_t k = 1;
     wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
     int threads = 1;
+    uint32_t part = WK_NONE;
 
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -147,12 +159,14 @@ int main(int argc, char **argv) {
             NEED_ARG();
             format = argv[++i];
             if (strcmp(format, "json") && strcmp(format, "svg") && strcmp(format, "obj") &&
-                strcmp(format, "vtp") && strcmp(format, "text"))
-                return usage_error("unknown format '%s' (json, text, svg, obj, vtp)", format);
+                strcmp(format, "vtp") && strcmp(format, "text") && strcmp(format, "geojson") &&
+                strcmp(format, "wkt"))
+                return usage_error("unknown format '%s' (json, text, svg, obj, vtp, geojson, wkt)",
+                                   format);
         } else if (!strcmp(a, "-o")) {
             NEED_ARG();
             outpath = argv[++i];
-        } else if (!strcmp(a, "--offsets")) {
+        } else if (!strcmp(a, "--offsets") || !strcmp(a, "--offset")) {
             NEED_ARG();
             offsets_arg = argv[++i];
         } else if (!strcmp(a, "--check")) {
@@ -175,6 +189,15 @@ int main(int argc, char **argv) {
             if (!strcmp(v, "lower")) collinear = WK_COLLINEAR_LOWER;
             else if (!strcmp(v, "higher")) collinear = WK_COLLINEAR_HIGHER;
             else return usage_error("--collinear must be 'lower' or 'higher' (got '%s')", v);
+        } else if (!strcmp(a, "--part")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            char *end;
+            errno = 0;
+            unsigned long long x = strtoull(v, &end, 10);
+            if (*v == '-' || end == v || *end || errno || x >= WK_NONE)
+                return usage_error("--part must be an integer >= 0 (got '%s')", v);
+            part = (uint32_t)x;
         } else if (!strcmp(a, "--threads")) {
             NEED_ARG();
             const char *v = argv[++i];
@@ -199,14 +222,15 @@ int main(int argc, char **argv) {
         return 0;
     }
     if (!input) return usage_error("%s", "no input file given");
-    if (offsets_arg && strcmp(format, "svg") != 0)
-        fprintf(stderr, "wskel: note: --offsets only affects --format svg\n");
+    bool offset_polygons = offsets_arg && (!strcmp(format, "geojson") || !strcmp(format, "wkt"));
+    if (offsets_arg && !offset_polygons && strcmp(format, "svg") != 0)
+        fprintf(stderr, "wskel: note: --offset only affects --format svg, geojson and wkt\n");
     if (k_given && !(wk_variant_flags(V) & WK_VARIANT_USES_K))
         fprintf(stderr, "wskel: note: variant %s ignores --k\n", wk_variant_name(V));
     double *offsets = NULL;
     uint32_t n_offsets = 0;
     if (offsets_arg && parse_offsets(offsets_arg, &offsets, &n_offsets) != 0)
-        return usage_error("--offsets must be a comma-separated list of times >= 0 (got '%s')",
+        return usage_error("--offset/--offsets must be a comma-separated list of times >= 0 (got '%s')",
                            offsets_arg);
 
     wk_run R;
@@ -215,6 +239,7 @@ int main(int argc, char **argv) {
     R.opt.collinear = collinear;
     R.opt.threads = threads;
     R.opt.check_invariants = check_invariants;
+    R.opt.part = part;
 
     int rc = 0;
     wk_polygon *P = NULL;
@@ -222,6 +247,8 @@ int main(int argc, char **argv) {
     wk_output out = {NULL, NULL, false, ""};
     double time_s = 0;
     size_t peak = 0;
+    wk_offset_set **sets = NULL;
+    double offset_s = -1; /* time of the wk_offset calls (--stats), < 0: none */
 
     if (wk_polygon_read_file(&R, input, &P) != WK_OK) {
         rc = report(&R, verbose);
@@ -254,8 +281,22 @@ int main(int argc, char **argv) {
     }
     wk_run_info info = {wk_variant_name(V), (wk_variant_flags(V) & WK_VARIANT_USES_K) ? k : WK_NONE, time_s, peak,
                         &R.counters, V};
-    wk_status st;
-    if (!strcmp(format, "json")) st = wk_write_json(&R, out.f, P, S, &info);
+    wk_status st = WK_OK;
+    if (offset_polygons) {
+        sets = calloc(n_offsets ? n_offsets : 1, sizeof *sets);
+        if (!sets) st = WK_FAIL(&R, WK_ENOMEM, NULL, 0, "out of memory (offset list)");
+        struct timespec t0, t1;
+        clock_gettime(CLOCK_MONOTONIC, &t0);
+        for (uint32_t j = 0; j < n_offsets && st == WK_OK; j++)
+            st = wk_offset(&R, P, S, offsets[j], &sets[j]);
+        clock_gettime(CLOCK_MONOTONIC, &t1);
+        offset_s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+        if (st == WK_OK)
+            st = !strcmp(format, "wkt") ? wk_write_offsets_wkt(&R, out.f, sets, n_offsets)
+                                        : wk_write_offsets_geojson(&R, out.f, P, sets, n_offsets);
+    } else if (!strcmp(format, "geojson")) st = wk_write_geojson(&R, out.f, P, S);
+    else if (!strcmp(format, "wkt")) st = wk_write_wkt(&R, out.f, P, S);
+    else if (!strcmp(format, "json")) st = wk_write_json(&R, out.f, P, S, &info);
     else if (!strcmp(format, "text")) st = wk_write_text(&R, out.f, P, S);
     else if (!strcmp(format, "svg")) st = wk_write_svg(&R, out.f, P, S, offsets, n_offsets);
     else if (!strcmp(format, "obj")) st = wk_write_obj(&R, out.f, P, S);
@@ -269,6 +310,8 @@ int main(int argc, char **argv) {
         fprintf(stderr, "variant %s  n %u  r %u  nodes %u  arcs %u\n", wk_variant_name(V), P->n, P->r,
                 S->n_nodes, S->n_arcs);
         fprintf(stderr, "time_s %.6f  peak_bytes %zu\n", time_s, peak);
+        if (offset_s >= 0)
+            fprintf(stderr, "offset_time_s %.6f  (%u offset times)\n", offset_s, n_offsets);
         for (uint32_t j = 0; j < wk_counter_count(V); j++)
             if (R.counters.c[j])
                 fprintf(stderr, "%-32s %llu\n", wk_counter_def_at(V, j)->name,
@@ -277,6 +320,9 @@ int main(int argc, char **argv) {
 
 done:
     wk_output_close(&R, &out, WK_EALGO); /* no-op unless a failure left it open */
+    if (sets)
+        for (uint32_t j = 0; j < n_offsets; j++) wk_offset_set_free(&R, sets[j]);
+    free(sets);
     free(offsets);
     wk_skeleton_free(&R, S);
     wk_polygon_free(&R, P);

@@ -1,5 +1,6 @@
 /*
-** polygon_read.c: the polygon readers, .wpoly and GraphML.
+** polygon_read.c: the polygon readers, .wpoly and GraphML, and the choice of
+** reader by content (GeoJSON and WKT: polygon_read_gis.c).
 **
 ** .wpoly, line oriented:
 **     # comment lines start with '#' (after optional blanks)
@@ -48,7 +49,7 @@
 ** would mean a process-wide xmlMemSetup, i.e. a mutable global); the tree is
 ** freed before the reader returns, so it never outlives a call.
 */
-#include "wskel.h"
+#include "read_text.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -166,7 +167,7 @@ static void describe_control(uint32_t cp, char *why, size_t size) {
 ** newlines, and quote the input, as do ours): runs of blanks and control
 ** characters become one space, bytes that are no UTF-8 (a quote cut inside
 ** a character) '?', and no blank is left at either end. */
-static void clean_message(char *buf, size_t size, const char *m) {
+void wk_read_clean_message(char *buf, size_t size, const char *m) {
     const unsigned char *u = (const unsigned char *)m;
     size_t len = strlen(m), n = 0;
     bool space = false;
@@ -600,7 +601,7 @@ static int key_number(xmlNode *e, const gkey *K, double *v, xmlNode **where, cha
     bool ok = parse_text_number(t.s, v);
     if (!ok) {
         char one_line[64];
-        clean_message(one_line, sizeof one_line, (const char *)t.s);
+        wk_read_clean_message(one_line, sizeof one_line, (const char *)t.s);
         clip_utf8(bad, bad_size, one_line, 40);
     }
     xstr_free(&t);
@@ -988,10 +989,12 @@ done:
     return st;
 }
 
-/* The bytes of a GraphML document: strict UTF-8 throughout, no NUL, no
-** control character but tab, LF and CR (see the header).  WK_OK or
-** WK_EINPUT naming the line and column (in bytes) of the first fault. */
-static wk_status graphml_bytes(wk_run *R, const char *buf, size_t len, const char *name) {
+/* The bytes of a GraphML, GeoJSON or WKT document: strict UTF-8 throughout,
+** no NUL, no control character but tab, LF and CR (see the header).  WK_OK
+** or WK_EINPUT naming the line and column (in bytes) of the first fault;
+** format names the format in the message (read_text.h). */
+wk_status wk_read_utf8_bytes(wk_run *R, const char *buf, size_t len, const char *name,
+                             const char *format) {
     const unsigned char *u = (const unsigned char *)buf;
     if (is_utf16_bom(buf, len)) return utf16_refused(R, name);
     long line = 1;
@@ -1015,7 +1018,8 @@ static wk_status graphml_bytes(wk_run *R, const char *buf, size_t len, const cha
         size_t k = utf8_seq(u + i, len - i, &cp);
         char why[160];
         if (k == 0)
-            snprintf(why, sizeof why, "byte 0x%02X is not UTF-8 (GraphML input must be UTF-8)", c);
+            snprintf(why, sizeof why, "byte 0x%02X is not UTF-8 (%s input must be UTF-8)", c,
+                     format);
         else if (is_control(cp))
             describe_control(cp, why, sizeof why);
         else {
@@ -1043,7 +1047,7 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
     if (!name) name = "";
     if (len > INT_MAX)
         return WK_FAIL(R, WK_EINPUT, name, 0, "GraphML input too large (%zu bytes)", len);
-    wk_status bytes = graphml_bytes(R, buf, len, name);
+    wk_status bytes = wk_read_utf8_bytes(R, buf, len, name, "GraphML");
     if (bytes != WK_OK) return bytes;
     bool first_failure = R->err.code == WK_OK;
     xmlParserCtxtPtr ctx = xmlNewParserCtxt();
@@ -1062,7 +1066,7 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
         char msg[256] = "not well-formed";
         long line = 0;
         if (err && err->message) {
-            clean_message(msg, sizeof msg, err->message);
+            wk_read_clean_message(msg, sizeof msg, err->message);
             line = err->line;
         }
         st = WK_FAIL(R, WK_EINPUT, name, line, "XML error: %s", msg);
@@ -1083,7 +1087,7 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
     if (st != WK_OK && first_failure && R->err.code != WK_OK) {
         /* Messages quote the document (ids, values): one line of UTF-8. */
         char tmp[sizeof R->err.msg];
-        clean_message(tmp, sizeof tmp, R->err.msg);
+        wk_read_clean_message(tmp, sizeof tmp, R->err.msg);
         memcpy(R->err.msg, tmp, sizeof tmp);
     }
     return st;
@@ -1107,10 +1111,24 @@ wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out) {
     if ((unsigned char)c[0] == 0xEF && (unsigned char)c[1] == 0xBB && (unsigned char)c[2] == 0xBF)
         c += 3;
     while (is_blank(*c) || *c == '\r' || *c == '\n') c++;
+    /* GeoJSON at '{', WKT at a letter (a .wpoly starts with '#' or a count) */
     if (*c == '<')
         st = wk_polygon_read_graphml(R, t.buf, t.len, name, out);
+    else if (*c == '{')
+        st = wk_polygon_read_geojson(R, t.buf, t.len, name, out);
+    else if ((*c >= 'A' && *c <= 'Z') || (*c >= 'a' && *c <= 'z'))
+        st = wk_polygon_read_wkt(R, t.buf, t.len, name, out);
     else
         st = parse_wpoly(R, &t, name, out);
+    bool single = *c != '{' && !((*c >= 'A' && *c <= 'Z') || (*c >= 'a' && *c <= 'z'));
     text_free(R, &t);
+    /* .wpoly and GraphML hold one polygon: part 0 is it, any other is refused
+    ** as the GeoJSON and WKT readers refuse a part beyond their count. */
+    if (st == WK_OK && single && R->opt.part != WK_NONE && R->opt.part > 0) {
+        wk_polygon_free(R, *out);
+        *out = NULL;
+        st = WK_FAIL(R, WK_EINPUT, name, 0,
+                     "--part %u, but the input holds 1 polygon (parts count from 0)", R->opt.part);
+    }
     return st;
 }

@@ -308,4 +308,17 @@
 #define WK_MONO_LEVEL_SLACK 1e3
 #define WK_MONO_LEVEL_REL 1e-12
 
+/* ----------------------------------------------------------- offsets */
+
+/* wk_offset (offset.c) pairs the crossings of an offset line with a face's
+** boundary along the line: sorted, they must alternate (entering, leaving).
+** Where the sort does not alternate, a crossing within WK_OFFSET_TIE_REL *
+** scale further along is taken first: two crossings that close are one
+** point of the skeleton seen through two arcs (a node at time t, or nodes
+** the skeleton placed within its own error), and their order is rounding.
+** The validator's default tolerance: what the skeleton's nodes may be off
+** by, and no farther: beyond it the sort is kept and the offset fails
+** (WK_EALGO) rather than join crossings that are apart. */
+#define WK_OFFSET_TIE_REL 1e-6
+
 #endif

@@ -1,5 +1,5 @@
 /*
-** write.h: what the five writers (write_*.c) share; engine-private.
+** write.h: what the writers (write_*.c) share; engine-private.
 **
 ** Every writer emits input numbering (wk_polygon_output_node,
 ** wk_polygon_input_edge), refuses a skeleton whose ids are out of range (a

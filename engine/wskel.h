@@ -216,6 +216,10 @@ typedef struct wk_options {
                                 (O(n) each: for tests, --check-invariants) */
     double tol_scale;        /* the simulation's tolerances times this (1;
                                 wk_solve_checked raises it on a retry) */
+    uint32_t part;           /* the readers: which polygon (0-based) of an input
+                                holding several (GeoJSON MultiPolygon or
+                                features, WKT MULTIPOLYGON); WK_NONE (the
+                                default): refuse such an input, naming the count */
 } wk_options;
 
 /* ------------------------------------------------------------------ run */
@@ -407,11 +411,19 @@ wk_status wk_polygon_from_arrays(wk_run *R, uint32_t n, const double *x, const d
 wk_status wk_polygon_from_rings(wk_run *R, uint32_t n_rings, const uint32_t *ring_size,
                                 const double *x, const double *y, const double *w,
                                 const char *name, const long *lines, wk_polygon **out);
-/* Read a .wpoly or GraphML file (chosen by content; "-" reads stdin). */
+/* Read a .wpoly, GraphML, GeoJSON or WKT file (chosen by content: '<'
+** GraphML, '{' GeoJSON, a letter WKT, else .wpoly; "-" reads stdin).
+** GeoJSON and WKT may hold several polygons: R->opt.part chooses one. */
 wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out);
 wk_status wk_polygon_read_wpoly(wk_run *R, FILE *f, const char *name, wk_polygon **out);
 wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const char *name,
                                   wk_polygon **out);
+/* GeoJSON and WKT from memory (engine/polygon_read_gis.c: the accepted
+** forms, the weights property, --part).  buf[len] need not be NUL. */
+wk_status wk_polygon_read_geojson(wk_run *R, const char *buf, size_t len, const char *name,
+                                  wk_polygon **out);
+wk_status wk_polygon_read_wkt(wk_run *R, const char *buf, size_t len, const char *name,
+                              wk_polygon **out);
 /* Write .wpoly (counter-clockwise, as stored). */
 wk_status wk_polygon_write_wpoly(wk_run *R, FILE *f, const wk_polygon *P);
 void wk_polygon_free(wk_run *R, wk_polygon *P);
@@ -557,6 +569,11 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
                        const double *offsets, uint32_t n_offsets);
 wk_status wk_write_obj(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
 wk_status wk_write_vtp(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
+/* GIS formats (engine/write_gis.c): GeoJSON, one LineString Feature per arc
+** with XYZ positions (t as Z) and properties a, b, left, right; WKT, one
+** MULTILINESTRING Z line. */
+wk_status wk_write_geojson(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
+wk_status wk_write_wkt(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
 
 /* An output file that appears whole or not at all (see engine/output.c):
 ** open with a path (NULL: stdout), write to o.f, then close with the status
@@ -578,6 +595,51 @@ wk_status wk_output_close(wk_run *R, wk_output *o, wk_status st);
 ** using *len). */
 wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
                         uint32_t **cycle, uint32_t *len);
+
+/* -------------------------------------------------------------- offsets */
+
+/* The wavefront at time t as polygons with holes: the closure of
+** {x in P : T(x) > t}, where T is the skeleton's roof (T(x) = d(x, e) / w(e)
+** in edge e's face), i.e. each face cut by its edge's offset line at
+** distance w(e) t (engine/offset.c).  Layout: component c's rings are
+** polygon_start[c] .. polygon_start[c+1]), its first ring the outer one
+** (counter-clockwise), then its holes (clockwise); ring k's vertices are
+** p[ring_start[k] .. ring_start[k+1]), not closed (the first point is not
+** repeated).  Times exactly at a node's time give the limit from above
+** (t + 0): a node at time t counts as already passed, so what vanishes at t
+** (an edge, a component) is gone, and where a split happens at t the two
+** parts are two components touching at one point; repeated consecutive
+** points are merged and rings left with fewer than 3 points or zero area
+** dropped.  t = 0 gives P itself: P's region, its vertices exactly P's (a
+** vertex between collinear edges is left out when the collinear rule
+** removed one of the edges at t = 0: its face is empty).  Deterministic. */
+typedef struct wk_offset_set {
+    double t;
+    uint32_t n_polygons;     /* connected components of the wavefront at t */
+    uint32_t *polygon_start; /* n_polygons + 1 offsets into the rings: a component's first ring is
+                                its outer ring (counter-clockwise), then its holes (clockwise) */
+    uint32_t n_rings;
+    uint32_t *ring_start;    /* n_rings + 1 offsets into p */
+    wk_point *p;             /* ring vertices, rings not closed (first point not repeated) */
+} wk_offset_set;
+/* The offset of polygon P at time t >= 0 computed from its skeleton S (each face cut by its edge's
+** offset line at t; weights respected: edge e's line is at distance w(e) t). Empty set when t is
+** beyond the last node's time (or at it).  S must be P's finished skeleton (ids are checked:
+** WK_EINVALID; a face whose crossings cannot be paired: WK_EALGO); t must be finite and >= 0
+** (WK_EINPUT).  *out is owned by the caller (wk_offset_set_free); on failure it is NULL.
+** O(arcs + m log m + H V) for m crossed arcs, H hole rings and V outer ring vertices. */
+wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double t,
+                    wk_offset_set **out);
+/* Accepts NULL. */
+void wk_offset_set_free(wk_run *R, wk_offset_set *O);
+/* Signed area of ring k of O (exact shoelace, rounded once). */
+double wk_offset_ring_area(const wk_offset_set *O, uint32_t k);
+/* Offsets as GIS formats (engine/write_gis.c): GeoJSON, a FeatureCollection
+** with one MultiPolygon Feature per set, properties {"t": t}; WKT, one
+** MULTIPOLYGON line per set (MULTIPOLYGON EMPTY when empty).  Rings closed. */
+wk_status wk_write_offsets_geojson(wk_run *R, FILE *f, const wk_polygon *P,
+                                   wk_offset_set *const *O, uint32_t n_sets);
+wk_status wk_write_offsets_wkt(wk_run *R, FILE *f, wk_offset_set *const *O, uint32_t n_sets);
 
 /* ------------------------------------------------------------- variants */
 

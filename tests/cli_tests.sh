@@ -161,14 +161,17 @@ usage_case "--threads abc" "--threads must be" --threads abc "$SQUARE"
 usage_case "--threads 2x" "--threads must be" --threads 2x "$SQUARE"
 usage_case "--offsets bad" "--offsets must be" --offsets 1,,2 "$SQUARE"
 usage_case "--offsets negative" "--offsets must be" --offsets -1 "$SQUARE"
-for opt in --variant --k --format -o --offsets --collinear --threads; do
+usage_case "--offset bad" "--offset/--offsets must be" --offset 1,x "$SQUARE"
+usage_case "--part -1" "--part must be" --part -1 "$SQUARE"
+usage_case "--part abc" "--part must be" --part abc "$SQUARE"
+for opt in --variant --k --format -o --offsets --offset --part --collinear --threads; do
   usage_case "$opt without value" "option $opt needs a value" "$SQUARE" "$opt"
 done
 
 run "$WSKEL" --help
 expect "--help exits 0" 0
-for word in --variant --k --format -o --offsets --check --stats --collinear --threads \
-            --help --list-variants json text svg obj vtp lower higher; do
+for word in --variant --k --format -o --offsets --offset --part --check --stats --collinear --threads \
+            --help --list-variants json text svg obj vtp geojson wkt lower higher; do
   # whole word: "-o" must not be satisfied by "--offsets"
   if grep -qE -e "(^|[^-[:alnum:]])${word}([^-[:alnum:]]|$)" "$OUT"; then
     pass "--help mentions $word"
@@ -223,6 +226,55 @@ for fmt in json text svg obj vtp; do
 done
 run "$WSKEL" --format svg --offsets 0.25,0.5 -o "$TMP/off.svg" "$WEIGHTED"
 expect "--format svg --offsets" 0
+run "$WSKEL" --format svg --offset 0.25,0.5 -o "$TMP/off1.svg" "$WEIGHTED"
+expect "--format svg --offset (the same option)" 0
+if cmp -s "$TMP/off.svg" "$TMP/off1.svg"; then pass "--offset and --offsets draw the same svg"
+else fail "--offset and --offsets draw the same svg" "the files differ"; fi
+# GIS formats: the skeleton, then offsets (one MULTIPOLYGON line / Feature per time)
+run "$WSKEL" --format wkt "$SQUARE"
+expect "--format wkt (skeleton)" 0
+if [[ "$(cat "$OUT")" == "MULTILINESTRING Z (("* ]]; then pass "wkt skeleton: MULTILINESTRING Z"
+else fail "wkt skeleton: MULTILINESTRING Z" "$(head -c 200 "$OUT")"; fi
+run "$WSKEL" --format wkt --offset 0,0.1,100 "$SQUARE"
+expect "--format wkt --offset" 0
+if [ "$(wc -l <"$OUT")" = 3 ] && [ "$(sed -n 3p "$OUT")" = "MULTIPOLYGON EMPTY" ] &&
+   [[ "$(sed -n 1p "$OUT")" == "MULTIPOLYGON ((("* ]]; then
+  pass "wkt offsets: one line per time, EMPTY past the end"
+else fail "wkt offsets: one line per time, EMPTY past the end" "$(head -c 300 "$OUT")"; fi
+run "$WSKEL" --format geojson --offset 0.5,1 -o "$TMP/off.geojson" "$GOOD/square_hole_weighted.geojson"
+expect "--format geojson --offset" 0
+if "$PY" - "$TMP/off.geojson" <<'PYEOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["type"] == "FeatureCollection" and len(d["features"]) == 2
+for f, t in zip(d["features"], (0.5, 1)):
+    assert f["properties"] == {"t": t} and f["geometry"]["type"] == "MultiPolygon"
+    polys = f["geometry"]["coordinates"]
+    assert len(polys) == 1 and len(polys[0]) == 2          # one component with its hole
+    for k, ring in enumerate(polys[0]):
+        assert ring[0] == ring[-1]                         # closed
+        a = sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(ring, ring[1:]))
+        assert (a > 0) == (k == 0)                         # outer ccw, hole cw
+PYEOF
+then pass "geojson offsets: Features with t, closed rings, outer ccw, hole cw"
+else fail "geojson offsets: Features with t, closed rings, outer ccw, hole cw" "see $TMP/off.geojson"; fi
+run "$WSKEL" --format geojson -o "$TMP/sk.geojson" "$SQUARE"
+expect "--format geojson (skeleton)" 0
+if "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); f=d["features"]; assert f and all(set(x["properties"])=={"a","b","left","right"} and len(x["geometry"]["coordinates"][0])==3 for x in f)' "$TMP/sk.geojson"; then
+  pass "geojson skeleton: one LineString Feature per arc, XYZ, a b left right"
+else fail "geojson skeleton: one LineString Feature per arc, XYZ, a b left right" "$(head -c 300 "$TMP/sk.geojson")"; fi
+run "$WSKEL" --format json --offset 1 "$SQUARE"
+expect "--offset with json: a note, the skeleton" 0 "--offset only affects"
+run "$WSKEL" "$BAD/wkt_two_polygons.wkt"
+expect "several parts without --part" 1 "choose one with --part I (0 to 1)"
+run "$WSKEL" --part 1 --format wkt --offset 0 "$BAD/wkt_two_polygons.wkt"
+expect "--part 1 takes the second polygon" 0
+if [ "$(cat "$OUT")" = "MULTIPOLYGON (((2 0, 3 0, 3 1, 2 0)))" ]; then pass "--part 1: its offset at 0 is that polygon"
+else fail "--part 1: its offset at 0 is that polygon" "$(cat "$OUT")"; fi
+run "$WSKEL" --part 5 "$SQUARE"
+expect "--part beyond a single .wpoly polygon" 1 "--part 5, but the input holds 1 polygon"
+run "$WSKEL" --part 0 "$SQUARE"
+expect "--part 0 of a .wpoly" 0
 run "$WSKEL" --stats --check "$SQUARE"
 expect "--stats --check exits 0" 0
 for word in "variant naive" time_s peak_bytes queue_pops "check: ok"; do

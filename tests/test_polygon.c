@@ -1045,6 +1045,8 @@ Test(polygon, fault_injection_readers_good_inputs) {
         "good/cw_weights.wpoly",   "good/comments.wpoly",   "good/crlf_default_weights.wpoly",
         "good/square.wpoly",       "good/straight_vertex.wpoly", "good/weighted.graphml",
         "good/unweighted.graphml", "hand/regular_64.wpoly", "hand/comb_equal.wpoly",
+        "good/square_hole_weighted.geojson", "good/one_feature.geojson",
+        "good/square_hole.wkt", "good/weighted_m.wkt",
     };
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
         reader_case c = {files[i], NULL, 0, false};

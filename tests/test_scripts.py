@@ -12,6 +12,7 @@
   - report.py embeds the figures and, with --roof, the rendered roof;
   - regress.py passes identical runs and fails on a changed counter, where
     an empty cell equals only an empty cell;
+  - plot_offsets.py writes a PNG from GeoJSON offsets and a skeleton;
   - large_report.py (scripts/perf_large.sh's report): the exponent, time /
     qsort and bytes per vertex at 10^6 of rows made with known values, and
     the verdicts against the targets, "not measured" below 10^6.
@@ -518,6 +519,30 @@ def test_large_report_exponent_ratio_and_verdicts():
     report = open(os.path.join(out, "REPORT.md")).read()
     assert "median **0.1 s**" in report and "| fast | coastline | 1000000 |" in report, report
     assert "timeout (time limit 5s exceeded" in report, report
+
+
+def test_plot_offsets_writes_png():
+    """plot_offsets.py draws GeoJSON offsets (a square with a hole, two
+    times, one empty) and a skeleton into a PNG."""
+    sq = [[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]]
+    hole = [[1, 1], [1, 2], [2, 2], [2, 1], [1, 1]]
+    offs = {"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"t": t},
+         "geometry": {"type": "MultiPolygon", "coordinates": c}}
+        for t, c in ((0, [[sq, hole]]), (0.5, [[[[0.5, 0.5], [3.5, 0.5], [3.5, 3.5], [0.5, 3.5],
+                                                  [0.5, 0.5]]]]), (2, []))]}
+    skel = {"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"a": 0, "b": 4, "left": 3, "right": 0},
+         "geometry": {"type": "LineString", "coordinates": [[0, 0, 0], [2, 2, 2]]}}]}
+    po, ps, png = (os.path.join(TMP, n) for n in ("o.geojson", "s.geojson", "o.png"))
+    for path, doc in ((po, offs), (ps, skel)):
+        with open(path, "w") as f:
+            json.dump(doc, f)
+    r = subprocess.run([PY, os.path.join(SCRIPTS, "plot_offsets.py"), po, "--skeleton", ps,
+                        "-o", png, "--title", "test"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with open(png, "rb") as f:
+        assert f.read(8) == b"\x89PNG\r\n\x1a\n"
 
 
 def main():

@@ -38,6 +38,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/create_straight_skeleton_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/create_offset_polygons_2.h>
+#include <CGAL/arrange_offset_polygons_2.h>
 
 #include <sys/resource.h>
 
@@ -60,6 +63,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
 typedef CGAL::Polygon_2<K> Polygon;
 typedef CGAL::Straight_skeleton_2<K> Ss;
+typedef CGAL::Polygon_with_holes_2<K> Pwh;
 
 static const uint32_t NONE = UINT32_MAX;
 
@@ -247,7 +251,43 @@ struct Result {
     std::vector<Node> nodes;
     std::vector<Arc> arcs;
     double time_s = 0;
+    std::vector<std::string> offset_wkt; /* --offset: one MULTIPOLYGON line per time */
 };
+
+/* One ring as WKT, closed. */
+static void put_ring(std::string &s, const Polygon &p) {
+    char buf[80];
+    s += "(";
+    for (size_t i = 0; i <= p.size(); i++) {
+        const Point &q = p[i % p.size()];
+        std::snprintf(buf, sizeof buf, "%s%.17g %.17g", i ? ", " : "", CGAL::to_double(q.x()),
+                      CGAL::to_double(q.y()));
+        s += buf;
+    }
+    s += ")";
+}
+
+/* CGAL's offset at time t from the skeleton (create_offset_polygons_2, then
+** arrange_offset_polygons_2 to nest holes into their components): the
+** MULTIPOLYGON line bin/wskel --offset --format wkt writes for the same t. */
+static Failure offset_wkt(const std::string &path, const Ss &ss, double t, std::string *out) {
+    std::vector<boost::shared_ptr<Polygon>> rings = CGAL::create_offset_polygons_2<Polygon>(t, ss, K());
+    bool ok = true;
+    std::vector<boost::shared_ptr<Pwh>> polys = CGAL::arrange_offset_polygons_2<Pwh>(rings, ok);
+    if (!ok) return fail(EXIT_ALGO, path + ": CGAL could not arrange the offset polygons");
+    std::string s;
+    for (size_t i = 0; i < polys.size(); i++) {
+        s += i ? ", (" : "(";
+        put_ring(s, polys[i]->outer_boundary());
+        for (auto h = polys[i]->holes_begin(); h != polys[i]->holes_end(); ++h) {
+            s += ", ";
+            put_ring(s, *h);
+        }
+        s += ")";
+    }
+    *out = polys.empty() ? "MULTIPOLYGON EMPTY" : "MULTIPOLYGON (" + s + ")";
+    return Failure{0, ""};
+}
 
 /* Bounding box of ring k's points. */
 struct Box {
@@ -306,7 +346,8 @@ static Failure check_rings(const std::string &path, const std::vector<std::vecto
     return Failure{0, ""};
 }
 
-static Failure build(const std::string &path, const Input &in, Result *res) {
+static Failure build(const std::string &path, const Input &in, const std::vector<double> &times,
+                     Result *res) {
     const uint32_t n = (uint32_t)in.x.size(), h = in.rings();
 
     /* CGAL wants the outer contour counter-clockwise and the holes
@@ -353,6 +394,20 @@ static Failure build(const std::string &path, const Input &in, Result *res) {
     auto t1 = std::chrono::steady_clock::now();
     res->time_s = std::chrono::duration<double>(t1 - t0).count();
     if (!ss) return fail(EXIT_ALGO, path + ": CGAL could not build the straight skeleton (null result)");
+    for (double t : times) {
+        std::string line;
+        Failure e = t > 0 ? offset_wkt(path, *ss, t, &line) : Failure{0, ""};
+        if (e.code) return e;
+        if (t == 0) { /* CGAL's offset at 0 is undefined (degenerate): the polygon itself */
+            line = "MULTIPOLYGON ((";
+            for (uint32_t k = 0; k < h; k++) {
+                if (k) line += ", ";
+                put_ring(line, Polygon(ring[k].begin(), ring[k].end()));
+            }
+            line += "))";
+        }
+        res->offset_wkt.push_back(line);
+    }
 
     /* Contour vertices are found by their exact coordinates: the polygon is
     ** simple and its rings disjoint, so the input points are distinct, and
@@ -417,12 +472,26 @@ static Failure build(const std::string &path, const Input &in, Result *res) {
 /* ------------------------------------------------------------------ main */
 
 static void usage(FILE *f) {
-    std::fputs("usage: wskel-cgal [--stats] [-o FILE] INPUT.wpoly\n"
+    std::fputs("usage: wskel-cgal [--stats] [--offset T1,T2,...] [-o FILE] INPUT.wpoly\n"
                "  CGAL's interior straight skeleton (unit weights only; holes as further\n"
                "  rings after the outer one) as wskel-1 JSON.\n"
                "  -o FILE   write to FILE (via FILE.tmp and a rename) instead of stdout\n"
-               "  --stats   print n, r, nodes, arcs, time and peak RSS to stderr\n",
+               "  --stats   print n, r, nodes, arcs, time and peak RSS to stderr\n"
+               "  --offset T1,T2,...  instead, CGAL's offset polygons at these times\n"
+               "            (create_offset_polygons_2 and arrange_offset_polygons_2 on the\n"
+               "            skeleton): one WKT MULTIPOLYGON line per time, outer rings\n"
+               "            counter-clockwise, holes clockwise, as bin/wskel --format wkt\n",
                f);
+}
+
+/* The skeleton as JSON, or with --offset the offset lines. */
+static void emit(FILE *f, const Input &in, const Result &res, const std::vector<double> &times,
+                 long rss) {
+    if (times.empty()) {
+        write_json(f, in, res.r, res.nodes, res.arcs, res.time_s, rss);
+        return;
+    }
+    for (const std::string &l : res.offset_wkt) std::fprintf(f, "%s\n", l.c_str());
 }
 
 static long peak_rss_bytes() {
@@ -434,10 +503,27 @@ static long peak_rss_bytes() {
 int main(int argc, char **argv) {
     bool stats = false;
     std::string out, in_path;
+    std::vector<double> times;
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
         if (a == "--stats") {
             stats = true;
+        } else if (a == "--offset") {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "wskel-cgal: --offset needs a list of times\n");
+                return EXIT_USAGE;
+            }
+            const char *c = argv[++i];
+            while (*c) {
+                char *end;
+                double t = std::strtod(c, &end);
+                if (end == c || !(t >= 0) || !std::isfinite(t) || (*end && *end != ',')) {
+                    std::fprintf(stderr, "wskel-cgal: --offset must be a list of times >= 0\n");
+                    return EXIT_USAGE;
+                }
+                times.push_back(t);
+                c = *end ? end + 1 : end;
+            }
         } else if (a == "-o" || a == "--output") {
             if (i + 1 >= argc) {
                 std::fprintf(stderr, "wskel-cgal: %s needs a file name\n", a.c_str());
@@ -470,7 +556,7 @@ int main(int argc, char **argv) {
     Failure e = read_wpoly(in_path, &in);
     if (!e.code) {
         try {
-            e = build(in_path, in, &res);
+            e = build(in_path, in, times, &res);
         } catch (const std::exception &ex) {
             /* CGAL reports failed preconditions and assertions this way. */
             e = fail(EXIT_ALGO, in_path + ": CGAL failed: " + ex.what());
@@ -498,7 +584,7 @@ int main(int argc, char **argv) {
             std::fprintf(stderr, "wskel-cgal: %s: cannot write: %s\n", out.c_str(), std::strerror(errno));
             return EXIT_INPUT;
         }
-        write_json(f, in, res.r, res.nodes, res.arcs, res.time_s, rss);
+        emit(f, in, res, times, rss);
         bool ok = !std::ferror(f);
         ok = (std::fclose(f) == 0) && ok;
         return ok ? 0 : EXIT_INPUT;
@@ -511,7 +597,7 @@ int main(int argc, char **argv) {
             return EXIT_INPUT;
         }
     }
-    write_json(f, in, res.r, res.nodes, res.arcs, res.time_s, rss);
+    emit(f, in, res, times, rss);
     if (!out.empty()) {
         bool ok = !std::ferror(f);
         ok = (std::fclose(f) == 0) && ok;

@@ -28,6 +28,8 @@ mkdir -p "$scratch" "$found" "$BF/findings/ealgo"
 case "$t" in
   wpoly)    opts=(-max_len=4096 -dict=tests/fuzz/wpoly.dict -timeout=10) ;;
   graphml)  opts=(-max_len=16384 -dict=tests/fuzz/graphml.dict -timeout=10) ;;
+  geojson)  opts=(-max_len=8192 -dict=tests/fuzz/geojson.dict -timeout=10) ;;
+  wkt)      opts=(-max_len=4096 -dict=tests/fuzz/wkt.dict -timeout=10) ;;
   variants) opts=(-max_len=16384 -dict=tests/fuzz/wpoly.dict -timeout=20) ;;
   *) echo "fuzz: unknown target $t" >&2; exit 2 ;;
 esac
