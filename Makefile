@@ -101,16 +101,13 @@ $(BA)/wskel: $(BA)/cli/main.o $(LIBASAN)
 
 # The Python module (python/wskel/, README "Python"): the library compiled
 # again with -fPIC into build-pic/, with the ctypes shim, into one shared
-# object next to the binding.  Until the engine's offsets (engine/offset.c)
-# are merged, a temporary stand-in (python/wskel/offset_standin.c, convex
-# polygons only) provides wk_offset.
+# object next to the binding.
 BP := build-pic
 PYSO := python/wskel/_libwskel.so
-OFFSET_STANDIN := $(if $(wildcard engine/offset.c),,python/wskel/offset_standin.c)
-PY_SRC := $(LIB_SRC) python/wskel/shim.c $(OFFSET_STANDIN)
+PY_SRC := $(LIB_SRC) python/wskel/shim.c
 $(BP)/%.o: %.c $(HDRS) $(wildcard python/wskel/*.h)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -fPIC $(if $(OFFSET_STANDIN),-DWKS_OFFSET_STANDIN) -c $< -o $@
+	$(CC) $(CFLAGS) -fPIC -c $< -o $@
 $(PYSO): $(PY_SRC:%.c=$(BP)/%.o)
 	$(CC) $(CFLAGS) -shared -Wl,--no-undefined $^ -o $@ $(LDLIBS)
 python: $(PYSO)

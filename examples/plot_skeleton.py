@@ -4,11 +4,8 @@ matplotlib (Agg backend) to a PNG, through the Python module (make python).
 
 usage: /usr/bin/python3 examples/plot_skeleton.py [OUT.png]   (default skeleton.png)
 
-The polygon is a convex one while the engine's offsets are the temporary
-stand-in (wskel.OFFSET_IS_STANDIN: convex polygons without holes only) and
-a polygon with a hole once engine/offset.c provides them.
+The polygon: an L shape with a square hole, its top edge twice as heavy.
 """
-import math
 import os
 import sys
 
@@ -23,14 +20,10 @@ import wskel  # noqa: E402
 
 
 def polygon():
-    if wskel.OFFSET_IS_STANDIN:
-        # A convex heptagon with one heavy edge (weight 2: it moves twice as fast).
-        outer = [(4 * math.cos(a), 3 * math.sin(a))
-                 for a in np.linspace(0, 2 * math.pi, 8)[:-1]]
-        return outer, [], [2, 1, 1, 1, 1, 1, 1]
     outer = [(0, 0), (10, 0), (10, 6), (6, 6), (6, 9), (0, 9)]
     hole = [(2, 2), (2, 4), (4, 4), (4, 2)]
-    return outer, [hole], None
+    # one weight list per ring; edge 4 (the top, (6, 9) -> (0, 9)) moves twice as fast
+    return outer, [hole], [[1, 1, 1, 1, 2, 1], [1, 1, 1, 1]]
 
 
 def main():
@@ -59,7 +52,7 @@ def main():
     fig.colorbar(sc, ax=ax, label="t (node time; offset curves coloured by their t)")
     ax.set_aspect("equal")
     ax.set_title("straight skeleton (red), offsets at %d times\n(%s)"
-                 % (len(times), "edge 0 has weight 2" if weights else "unit weights"))
+                 % (len(times), "the top edge has weight 2" if weights else "unit weights"))
     fig.savefig(out, dpi=110, bbox_inches="tight")
     print("wrote", out, "(%d nodes, %d arcs)" % (len(sk.nodes), len(sk.arcs)))
     return 0

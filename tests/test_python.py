@@ -231,11 +231,6 @@ def test_offset_hexagon_closed_form():
 
 
 def test_offset_with_holes():
-    if wskel.OFFSET_IS_STANDIN:
-        e = expect(wskel.UnsupportedError, wskel.offset, FRAME[0], FRAME[1], t=0.5)
-        assert "stand-in" in e.message
-        print("  (offset stand-in: holes not supported until engine/offset.c is merged)")
-        return
     prev = None
     for t in (0.25, 0.5, 1.0, 1.4):
         polys = wskel.offset(FRAME[0], FRAME[1], t=t)

@@ -40,7 +40,7 @@ import numpy as np
 
 __all__ = ["skeleton", "offset", "roof", "variants", "Skeleton", "Roof", "Error", "InputError",
            "AlgorithmError", "UnsupportedError", "MemoryLimitError", "InvalidOutputError",
-           "UsageError", "LeakError", "K_MAX", "OFFSET_IS_STANDIN", "run_stats"]
+           "UsageError", "LeakError", "K_MAX", "run_stats"]
 
 _HERE = os.path.dirname(os.path.abspath(__file__))
 _LIB_PATH = os.path.join(_HERE, "_libwskel.so")
@@ -92,11 +92,6 @@ _err_input = _sig("wks_error_input", ctypes.c_char_p, _h)
 _err_input_line = _sig("wks_error_input_line", ctypes.c_long, _h)
 _err_src_file = _sig("wks_error_src_file", ctypes.c_char_p, _h)
 _err_src_line = _sig("wks_error_src_line", ctypes.c_int, _h)
-_offset_is_standin = _sig("wks_offset_is_standin", ctypes.c_int)
-
-# True while wk_offset is the temporary stand-in (convex polygons without
-# holes only; python/wskel/offset_standin.c), False with engine/offset.c.
-OFFSET_IS_STANDIN = bool(_offset_is_standin())
 
 
 # ------------------------------------------------------------------ errors

@@ -29,13 +29,6 @@
 #include <string.h>
 
 #include "wskel.h"
-#if defined(WKS_OFFSET_STANDIN)
-#include "offset_standin.h"
-#elif defined(__has_include)
-#if __has_include("offset.h")
-#include "offset.h"
-#endif
-#endif
 
 typedef struct wks_handle {
     wk_run R;
@@ -269,12 +262,4 @@ int wks_error_src_line(const wks_handle *h) { return h->R.err.src_line; }
 /* "file:line: message", as the CLI prints it. */
 void wks_error_format(const wks_handle *h, char *buf, size_t size) {
     wk_error_format(&h->R, buf, size);
-}
-/* Whether wk_offset is the temporary stand-in (python/wskel/offset_standin.c). */
-int wks_offset_is_standin(void) {
-#if defined(WKS_OFFSET_STANDIN)
-    return 1;
-#else
-    return 0;
-#endif
 }
