@@ -44,6 +44,9 @@ static const char usage_text[] =
     "                     'lower' (default, the lower weight edge survives, as in\n"
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
     "  --threads N        OpenMP threads for variants that use them (default 1)\n"
+    "  --step S           variants that advance in time steps (deforming): the\n"
+    "                     first increment times S (default 1); the skeleton\n"
+    "                     does not depend on it\n"
     "  --verbose          on failure, also say where in wskel it was raised\n"
     "  --check-invariants after every group of events, check the wavefront's and\n"
     "                     the variant's invariants (slow: O(n) per group; tests)\n"
@@ -105,6 +108,7 @@ int main(int argc, char **argv) {
     uint32_t k = 1;
     wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
     int threads = 1;
+    double step_scale = 1;
 
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -183,6 +187,14 @@ int main(int argc, char **argv) {
             if (end == v || *end || x < 1 || x > 1024)
                 return usage_error("--threads must be an integer in 1..1024 (got '%s')", v);
             threads = (int)x;
+        } else if (!strcmp(a, "--step")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            char *end;
+            double x = strtod(v, &end);
+            if (end == v || *end || !(x >= 1e-6 && x <= 1e6))
+                return usage_error("--step must be a number in [1e-6, 1e6] (got '%s')", v);
+            step_scale = x;
         } else if (a[0] == '-' && a[1] != '\0') {
             return usage_error("unknown option '%s'", a);
         } else {
@@ -214,6 +226,7 @@ int main(int argc, char **argv) {
     R.opt.k = k;
     R.opt.collinear = collinear;
     R.opt.threads = threads;
+    R.opt.step_scale = step_scale;
     R.opt.check_invariants = check_invariants;
 
     int rc = 0;

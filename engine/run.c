@@ -30,6 +30,7 @@ void (wk_run_init)(wk_run *R) {
     R->opt.collinear = WK_COLLINEAR_LOWER;
     R->opt.threads = 1;
     R->opt.tol_scale = 1;
+    R->opt.step_scale = 1;
     R->err.code = WK_OK;
 }
 

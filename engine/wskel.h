@@ -216,6 +216,10 @@ typedef struct wk_options {
                                 (O(n) each: for tests, --check-invariants) */
     double tol_scale;        /* the simulation's tolerances times this (1;
                                 wk_solve_checked raises it on a retry) */
+    double step_scale;       /* variants that advance in time steps (the
+                                deforming variant): the first increment
+                                times this (1; --step); the skeleton must
+                                not depend on it */
 } wk_options;
 
 /* ------------------------------------------------------------------ run */

@@ -1,0 +1,169 @@
+/*
+** deforming.c: the deforming-polygon variant (paper 004): the wavefront
+** as a polygon whose vertices move at constant velocity, advanced by
+** predictor steps (predict.c), corrected back to the earliest event of a
+** step and changed there (resolve.c), until every cycle has vanished.
+** Positive weights only; polygons with holes (every cycle is one more
+** linked list, and the penetration search covers them all).
+**
+** The step-size policy (README): the first increment lets an edge of the
+** largest weight cross about one grid cell (the grid predict.c lays over
+** the polygon, sqrt(alive) cells a side) times --step (1 by default);
+** after a step without events the increment doubles, after a step whose
+** penetration search tested more than DF_TESTS_HIGH pairs per vertex it
+** halves, after a corrected step it stays.  Event times come from the
+** exact interpolation, not from the grid of steps, so the skeleton does
+** not depend on the increment (tests/test_deforming.py halves and doubles
+** it).
+**
+** The result is certified: the skeleton must pass wk_validate; when it
+** does not, or the resolution meets a configuration it does not handle
+** (WK_EALGO), the input goes to the reference variant (counted on
+** reference_fallbacks): never a wrong skeleton.
+*/
+#include "deforming.h"
+
+#include <math.h>
+#include <string.h>
+#include <stdlib.h>
+
+/* Penetration pairs per vertex and step above which the next increment
+** halves: the swept boxes then cover many cells each. */
+#define DF_TESTS_HIGH 16u
+
+wk_status df_add_vertex(df_state *D, const df_vertex *V, uint32_t *id) {
+    wk_run *R = D->R;
+    if (WK_GROW(R, D->v, D->cap_v, D->nv + 1) != WK_OK ||
+        WK_GROW(R, D->member, D->cap_member, D->nv + 1) != WK_OK ||
+        WK_GROW(R, D->mark, D->cap_mark, D->nv + 1) != WK_OK)
+        return R->err.code;
+    D->v[D->nv] = *V;
+    D->member[D->nv] = WK_NONE;
+    D->mark[D->nv] = 0;
+    *id = D->nv++;
+    D->n_alive++;
+    return WK_OK;
+}
+
+static void df_free(df_state *D) {
+    wk_run *R = D->R;
+    df_resolve_free(D);
+    WK_FREE_ARRAY(R, D->L, D->P->n);
+    WK_FREE_ARRAY(R, D->v, D->cap_v);
+    WK_FREE_ARRAY(R, D->member, D->cap_member);
+    WK_FREE_ARRAY(R, D->mark, D->cap_mark);
+    WK_FREE_ARRAY(R, D->ev, D->cap_ev);
+    WK_FREE_ARRAY(R, D->ids, D->cap_ids);
+    WK_FREE_ARRAY(R, D->cell_start, D->cap_cell_start);
+    WK_FREE_ARRAY(R, D->cell_items, D->cap_cell_items);
+    WK_FREE_ARRAY(R, D->big, D->cap_big);
+    WK_FREE_ARRAY(R, D->stamp, D->cap_stamp);
+}
+
+/* The input vertices: vertex i between edges prev(i) and i. */
+static wk_status df_start(df_state *D) {
+    wk_run *R = D->R;
+    const wk_polygon *P = D->P;
+    D->o = wk_polygon_centre(P);
+    D->L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
+    if (!D->L) return R->err.code;
+    D->wmax = 0;
+    for (uint32_t e = 0; e < P->n; e++) {
+        if (!(P->w[e] > 0))
+            return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                           "deforming: weight of edge %u is %g; only positive weights are "
+                           "supported so far",
+                           wk_polygon_input_edge(P, e), P->w[e]);
+        wk_offset_line_of_edge_at(P, e, D->o, &D->L[e]);
+        if (P->w[e] > D->wmax) D->wmax = P->w[e];
+    }
+    double scale = wk_polygon_scale(P);
+    D->eps_d = R->opt.tol_scale * WK_TOL_REL * scale;
+    D->eps_t = WK_TOL_TIME * D->eps_d / D->wmax;
+    if (wk_skeleton_new(R, P, &D->S) != WK_OK) return R->err.code;
+    for (uint32_t i = 0; i < P->n; i++) {
+        uint32_t ein = wk_polygon_prev(P, i), id;
+        df_vertex V = {{P->p[i].x - D->o.x, P->p[i].y - D->o.y}, {0, 0}, 0, ein, i,
+                       ein, wk_polygon_next(P, i), i, 1};
+        wk_velocity_kind kind = wk_vertex_velocity(&D->L[ein], &D->L[i], &V.v);
+        if (kind == WK_VEL_COLLINEAR || kind == WK_VEL_ANTIPARALLEL)
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "deforming: vertex %u lies between parallel edges of different weight "
+                           "(the collinear rule is not implemented)",
+                           P->input_index[i]);
+        if (df_add_vertex(D, &V, &id) != WK_OK) return R->err.code;
+    }
+    double cells = ceil(sqrt((double)P->n));
+    D->dt = R->opt.step_scale * scale / (cells * D->wmax);
+    return WK_OK;
+}
+
+static wk_status df_simulate(df_state *D) {
+    wk_run *R = D->R;
+    /* Each resolution at one time ends at least one vertex of the input's
+    ** O(n) events; many more resolutions at one time than that is a loop. */
+    uint64_t same_time = 0;
+    while (D->n_alive > 0) {
+        double te;
+        if (df_predict(D, &te) != WK_OK) return R->err.code;
+        uint64_t per_vertex = D->last_tests / (D->n_alive + 1);
+        if (D->n_ev == 0) {
+            wk_count(R, WK_VC_event_free_steps, 1);
+            D->t += D->dt;
+            if (per_vertex <= DF_TESTS_HIGH) D->dt *= 2;
+            else D->dt *= 0.5;
+            if (!isfinite(D->t))
+                return WK_FAIL(R, WK_EALGO, D->P->name, 0,
+                               "deforming: %u vertices still alive at t = infinity", D->n_alive);
+            continue;
+        }
+        /* the corrector: P_c = P_p + (dt_c - dt) v, i.e. the polygon at te
+        ** (positions are kept as p0 + (t - t0) v, so this moves the present) */
+        wk_count(R, WK_VC_corrections, 1);
+        same_time = te == D->t ? same_time + 1 : 0;
+        if (same_time > 8 * (uint64_t)D->P->n + 64)
+            return WK_FAIL(R, WK_EALGO, D->P->name, 0,
+                           "deforming: events at t = %.17g do not end (resolution loop)", te);
+        D->t = te;
+        if (per_vertex > DF_TESTS_HIGH) D->dt *= 0.5;
+        if (getenv("DF_DEBUG")) { fprintf(stderr, "t=%.17g nev=%u alive=%u\n", te, D->n_ev, D->n_alive); for (uint32_t q = 0; q < D->n_ev; q++) { df_vertex *A = &D->v[D->ev[q].a]; fprintf(stderr, "  ev kind %u a %u (ein %u eout %u prev %u next %u) b %u t %.17g\n", D->ev[q].kind, D->ev[q].a, A->ein, A->eout, A->prev, A->next, D->ev[q].b, D->ev[q].t); } }
+        if (df_resolve(D, te) != WK_OK) return R->err.code;
+    }
+    return wk_skeleton_merge_pass_through(R, D->S);
+}
+
+static wk_status deforming_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
+    df_state D;
+    memset(&D, 0, sizeof D);
+    D.R = R;
+    D.P = P;
+    wk_status st = df_start(&D);
+    if (st == WK_OK) st = df_simulate(&D);
+    if (st == WK_OK) {
+        *out = D.S;
+        D.S = NULL;
+    }
+    if (D.S) wk_skeleton_free(R, D.S);
+    df_free(&D);
+    if (st == WK_EUNSUPPORTED) return st;
+    /* Certify: the skeleton must pass the validator; a configuration the
+    ** resolution does not handle, or a skeleton that fails, goes to the
+    ** reference (never a wrong skeleton). */
+    if (st == WK_OK && (st = wk_validate(R, P, *out, 0, NULL)) != WK_OK) {
+        wk_skeleton_free(R, *out);
+        *out = NULL;
+    }
+    if (st != WK_EALGO && st != WK_EINVALID) return st;
+    return wk_solve_by_reference(R, P, WK_VC_reference_fallbacks, out);
+}
+
+static const wk_counter_def df_counters[] = WK_VARIANT_COUNTER_TABLE(DF_COUNTER_LIST);
+
+const wk_variant wk_variant_deforming = {
+    "deforming",
+    "deforming polygon, predictor-corrector steps (004); positive weights, holes",
+    WK_VARIANT_WEIGHTS,
+    df_counters,
+    sizeof df_counters / sizeof df_counters[0],
+    deforming_run,
+};
