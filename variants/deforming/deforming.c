@@ -9,9 +9,9 @@
 ** The step-size policy (README): the first increment lets an edge of the
 ** largest weight cross about one grid cell (the grid predict.c lays over
 ** the polygon, sqrt(alive) cells a side) times --step (1 by default);
-** after a step without events the increment doubles, after a step whose
-** penetration search tested more than DF_TESTS_HIGH pairs per vertex it
-** halves, after a corrected step it stays.  Event times come from the
+** after a step without events the increment doubles; after a corrected
+** step it becomes twice the time the step advanced (the same if the event
+** was at the step's start).  Event times come from the
 ** exact interpolation, not from the grid of steps, so the skeleton does
 ** not depend on the increment (tests/test_deforming.py halves and doubles
 ** it).
@@ -26,10 +26,6 @@
 #include <math.h>
 #include <string.h>
 #include <stdlib.h>
-
-/* Penetration pairs per vertex and step above which the next increment
-** halves: the swept boxes then cover many cells each. */
-#define DF_TESTS_HIGH 16u
 
 wk_status df_add_vertex(df_state *D, const df_vertex *V, uint32_t *id) {
     wk_run *R = D->R;
@@ -86,13 +82,16 @@ static wk_status df_start(df_state *D) {
         df_vertex V = {{P->p[i].x - D->o.x, P->p[i].y - D->o.y}, {0, 0}, 0, ein, i,
                        ein, wk_polygon_next(P, i), i, 1};
         wk_velocity_kind kind = wk_vertex_velocity(&D->L[ein], &D->L[i], &V.v);
-        if (kind == WK_VEL_COLLINEAR || kind == WK_VEL_ANTIPARALLEL)
+        if (kind == WK_VEL_ANTIPARALLEL)
             return WK_FAIL(R, WK_EALGO, P->name, 0,
-                           "deforming: vertex %u lies between parallel edges of different weight "
-                           "(the collinear rule is not implemented)",
+                           "deforming: vertex %u lies between antiparallel edges",
                            P->input_index[i]);
         if (df_add_vertex(D, &V, &id) != WK_OK) return R->err.code;
     }
+    /* input vertices between parallel edges of different weight: the
+    ** collinear rule at t = 0 */
+    for (uint32_t i = 0; i < P->n; i++)
+        if (D->v[i].alive && df_collinear_rule(D, i, 0.0, false) != WK_OK) return R->err.code;
     double cells = ceil(sqrt((double)P->n));
     D->dt = R->opt.step_scale * scale / (cells * D->wmax);
     return WK_OK;
@@ -106,12 +105,10 @@ static wk_status df_simulate(df_state *D) {
     while (D->n_alive > 0) {
         double te;
         if (df_predict(D, &te) != WK_OK) return R->err.code;
-        uint64_t per_vertex = D->last_tests / (D->n_alive + 1);
         if (D->n_ev == 0) {
             wk_count(R, WK_VC_event_free_steps, 1);
             D->t += D->dt;
-            if (per_vertex <= DF_TESTS_HIGH) D->dt *= 2;
-            else D->dt *= 0.5;
+            D->dt *= 2;
             if (!isfinite(D->t))
                 return WK_FAIL(R, WK_EALGO, D->P->name, 0,
                                "deforming: %u vertices still alive at t = infinity", D->n_alive);
@@ -124,9 +121,11 @@ static wk_status df_simulate(df_state *D) {
         if (same_time > 8 * (uint64_t)D->P->n + 64)
             return WK_FAIL(R, WK_EALGO, D->P->name, 0,
                            "deforming: events at t = %.17g do not end (resolution loop)", te);
+        /* the next increment: twice the time this step advanced (events
+        ** come at about that rate), the same when it did not advance */
+        if (te > D->t) D->dt = 2 * (te - D->t);
         D->t = te;
-        if (per_vertex > DF_TESTS_HIGH) D->dt *= 0.5;
-        if (getenv("DF_DEBUG")) { fprintf(stderr, "t=%.17g nev=%u alive=%u\n", te, D->n_ev, D->n_alive); for (uint32_t q = 0; q < D->n_ev; q++) { df_vertex *A = &D->v[D->ev[q].a]; fprintf(stderr, "  ev kind %u a %u (ein %u eout %u prev %u next %u) b %u t %.17g\n", D->ev[q].kind, D->ev[q].a, A->ein, A->eout, A->prev, A->next, D->ev[q].b, D->ev[q].t); } }
+        if (getenv("DF_DEBUG")) { fprintf(stderr, "t=%.17g nev=%u alive=%u dt=%g tests=%llu\n", te, D->n_ev, D->n_alive, D->dt, (unsigned long long)D->last_tests); for (uint32_t q = 0; q < D->n_ev; q++) { df_vertex *A = &D->v[D->ev[q].a]; fprintf(stderr, "  ev kind %u a %u (ein %u eout %u prev %u next %u) b %u t %.17g\n", D->ev[q].kind, D->ev[q].a, A->ein, A->eout, A->prev, A->next, D->ev[q].b, D->ev[q].t); } }
         if (df_resolve(D, te) != WK_OK) return R->err.code;
     }
     return wk_skeleton_merge_pass_through(R, D->S);
@@ -154,6 +153,7 @@ static wk_status deforming_run(wk_run *R, const wk_polygon *P, wk_skeleton **out
         *out = NULL;
     }
     if (st != WK_EALGO && st != WK_EINVALID) return st;
+    if (getenv("DF_DEBUG")) fprintf(stderr, "DF fallback: %s\n", R->err.msg);
     return wk_solve_by_reference(R, P, WK_VC_reference_fallbacks, out);
 }
 

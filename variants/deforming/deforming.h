@@ -94,6 +94,8 @@ wk_status df_predict(df_state *D, double *t_event);
 ** arcs.  WK_EALGO when the events do not form a configuration it can
 ** resolve (the caller then hands the input to the reference). */
 wk_status df_resolve(df_state *D, double te);
+/* resolve.c: the collinear rule at vertex x at time te (see there). */
+wk_status df_collinear_rule(df_state *D, uint32_t x, double te, bool fresh);
 /* resolve.c: free what df_resolve keeps between calls. */
 void df_resolve_free(df_state *D);
 /* deforming.c: a new alive vertex; *id receives it. */

@@ -252,6 +252,65 @@ static wk_status fresh_node_at(df_state *D, uint32_t x, double te, uint32_t *nod
     return end_at(D, x, *node);
 }
 
+/* The collinear rule (000, section 1), as the engine applies it: a vertex
+** x between parallel edges of different weight (same sense) cannot move
+** with both.  The piece of the losing weight next to x (the higher weight
+** by default, the lower with --collinear higher) is swept at once: an arc
+** along it at time te between its face (right) and the winner's (left),
+** its far vertex ends there, and a new vertex at that far end joins the
+** winner's edge to the edge beyond; that vertex may again lie between
+** parallel edges of different weight, so the rule repeats.  fresh: push
+** the new vertices on the resolution's list (false at t = 0, where no
+** resolution runs). */
+wk_status df_collinear_rule(df_state *D, uint32_t x, double te, bool fresh) {
+    wk_run *R = D->R;
+    for (uint32_t guard = 0; guard <= D->nv; guard++) {
+        df_vertex *X = &D->v[x];
+        wk_point vel;
+        if (!X->alive || wk_vertex_velocity(&D->L[X->ein], &D->L[X->eout], &vel) != WK_VEL_COLLINEAR)
+            return WK_OK;
+        uint32_t y = X->next, w = X->prev;
+        if (y == w || y == x) return WK_OK; /* a cycle of two: the clean-up's */
+        double w_in = D->L[X->ein].w, w_out = D->L[X->eout].w;
+        bool lower = R->opt.collinear == WK_COLLINEAR_LOWER;
+        bool out_loses = lower ? w_out > w_in : w_out < w_in;
+        /* the losing piece runs a -> b; the far vertex f is b or a */
+        uint32_t a = out_loses ? x : w, b = out_loses ? y : x, f = out_loses ? y : w;
+        uint32_t win = out_loses ? X->ein : X->eout, lose = out_loses ? X->eout : X->ein;
+        uint32_t na, nb;
+        if (fresh_node_at(D, a, te, &na) != WK_OK || fresh_node_at(D, b, te, &nb) != WK_OK)
+            return R->err.code;
+        if (na != nb && wk_skeleton_add_arc(R, D->S, na, nb, win, lose) != WK_OK) return R->err.code;
+        wk_event ev = {te, 0, 0, lose, win, WK_NONE};
+        wk_notify_event(R, WK_COUNTER_collinear_resolutions, &ev);
+        uint32_t nf = out_loses ? nb : na;
+        df_vertex Z = {{0, 0}, {0, 0}, te, out_loses ? win : D->v[f].ein,
+                       out_loses ? D->v[f].eout : win, WK_NONE, WK_NONE, nf, 1};
+        bool reflex;
+        wk_point q = df_pos(&D->v[f], te);
+        double eps_c = WK_DEFORM_CONTACT_SLACK * D->eps_d;
+        (void)wk_vertex_start(D->L, Z.ein, Z.eout, q, te, eps_c, &Z.p0, &Z.v, &reflex);
+        uint32_t z;
+        if (df_add_vertex(D, &Z, &z) != WK_OK) return R->err.code;
+        /* splice: before(a) -> z -> after(b) */
+        uint32_t before = D->v[out_loses ? x : w].prev, after = D->v[out_loses ? y : x].next;
+        D->v[x].alive = D->v[f].alive = 0;
+        D->n_alive -= 2;
+        D->v[z].prev = before;
+        D->v[z].next = after;
+        D->v[before].next = z;
+        D->v[after].prev = z;
+        if (fresh) {
+            struct df_resolve_scratch *S = D->rs;
+            if (WK_GROW(R, S->fresh, S->cap_fresh, S->n_f + 1) != WK_OK) return R->err.code;
+            S->fresh[S->n_f++] = z;
+        }
+        x = z;
+    }
+    return WK_FAIL(R, WK_EALGO, D->P->name, 0, "deforming: the collinear rule does not end at t = %.17g",
+                   te);
+}
+
 static wk_status resolve(df_state *D, double te) {
     struct df_resolve_scratch *S = D->rs;
     wk_run *R = D->R;
@@ -352,11 +411,7 @@ static wk_status resolve(df_state *D, double te) {
             bool reflex;
             wk_velocity_kind kind =
                 wk_vertex_start(D->L, V.ein, V.eout, S->cx[k], te, eps_c, &V.p0, &V.v, &reflex);
-            if (kind == WK_VEL_COLLINEAR)
-                return WK_FAIL(R, WK_EALGO, D->P->name, 0,
-                               "deforming: parallel edges %u and %u of different weight meet at t = "
-                               "%.17g (the collinear rule is not implemented)",
-                               V.ein, V.eout, te);
+            (void)kind; /* a collinear vertex is taken by the collinear rule below */
             uint32_t id;
             if (df_add_vertex(D, &V, &id) != WK_OK) return R->err.code;
             S->rays[i].newv = S->rays[j].newv = id;
@@ -394,6 +449,10 @@ static wk_status resolve(df_state *D, double te) {
         } else {
             unlink_vertex(D, x);
         }
+    }
+    for (uint32_t i = 0; i < S->n_f; i++) {
+        uint32_t x = S->fresh[i];
+        if (D->v[x].alive && df_collinear_rule(D, x, te, true) != WK_OK) return R->err.code;
     }
     for (uint32_t i = 0; i < S->n_f; i++) {
         uint32_t x = S->fresh[i];
