@@ -105,12 +105,14 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     ** the inner side of each of its pieces) and on the line by t1 */
     if (g0 < -eps_c || !(rate < -WK_APPROACH_REL * speed) || g1 > 0) return WK_OK;
     /* The vertex must meet the piece from the unswept side: one of its own
-    ** pieces leaves it into that side (n . direction > 0, on the input
-    ** directions).  A vertex on the line whose pieces all lie beyond it
+    ** pieces leaves it into that side or along the line (n . direction >
+    ** -WK_PARALLEL_SIN, on the input directions; along the line: the two
+    ** overlap).  A vertex on the line whose pieces all lie beyond it
     ** touches the piece's back: no contact (and resolving it would change
     ** nothing, again and again). */
     const wk_offset_line *Lin = &D->L[V->ein], *Lout = &D->L[V->eout];
-    if (!(L->nx * Lout->ux + L->ny * Lout->uy > 0) && !(-(L->nx * Lin->ux + L->ny * Lin->uy) > 0))
+    if (L->nx * Lout->ux + L->ny * Lout->uy < -WK_PARALLEL_SIN &&
+        -(L->nx * Lin->ux + L->ny * Lin->uy) < -WK_PARALLEL_SIN)
         return WK_OK;
     /* A vertex that sits on an end of the piece now was resolved with it
     ** (both came out of the last event point): not a new contact. */
