@@ -113,6 +113,7 @@ test-py: all
 	$(PY) tests/test_degenerate.py
 	$(PY) tests/test_holes.py
 	$(PY) tests/test_motorcycle.py
+	WSKEL_DEFORMING_MAX_N=256 $(PY) tests/test_deforming.py
 	$(PY) tests/test_cgal_agreement.py
 	$(PY) tests/test_scripts.py
 	$(MAKE) --no-print-directory stress-quick

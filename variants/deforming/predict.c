@@ -71,6 +71,21 @@ static wk_status push_event(df_state *D, double t, uint32_t kind, uint32_t a, ui
     return WK_OK;
 }
 
+/* The time where the linear function f(t) = d . (x_a(t) - x_b(t)) - c
+** vanishes, x(t) = p0 + (t - t0) v (b may be NULL: x_b = 0); rate is
+** df/dt (plus any term in t the caller folded in).  f(t) = k + rate t with
+** k = d . (p0_a - t0_a v_a - p0_b + t0_b v_b) - c. */
+static double root(double dx, double dy, const df_vertex *a, const df_vertex *b, double c,
+                   double rate) {
+    double kx = a->p0.x - a->t0 * a->v.x, ky = a->p0.y - a->t0 * a->v.y;
+    if (b) {
+        kx -= b->p0.x - b->t0 * b->v.x;
+        ky -= b->p0.y - b->t0 * b->v.y;
+    }
+    double k = dx * kx + dy * ky - c;
+    return -k / rate;
+}
+
 /* Edge swap of the piece a -> next(a) within [t, t1]. */
 static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     const df_vertex *A = &D->v[a], *B = &D->v[A->next];
@@ -82,10 +97,13 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     double rate = L->ux * (B->v.x - A->v.x) + L->uy * (B->v.y - A->v.y);
     double speed = fabs(A->v.x) + fabs(A->v.y) + fabs(B->v.x) + fabs(B->v.y) + D->wmax;
     if (!(rate < -WK_APPROACH_REL * speed) || l1 > 0) return WK_OK;
-    /* 004 eq. 22-25: xi_c = -l_m / l_d, dt_c = (1 + xi_c) dt / 2, which is
-    ** l0 / (l0 - l1) of the increment; l0 <= 0 (already collapsed within
-    ** the contact tolerance at t) is an event now */
-    double te = l0 <= 0 ? t : t + (t1 - t) * (l0 / (l0 - l1));
+    /* 004 eq. 22-25: xi_c = -l_m / l_d, dt_c = (1 + xi_c) dt / 2, i.e. the
+    ** root of the linear l(t).  Evaluated on l's own coefficients (from the
+    ** vertices' births), not on l0 and l1, so that the time does not depend
+    ** on where the step started (simultaneous events stay simultaneous
+    ** whatever the increment); l0 <= 0 is an event now. */
+    double te = l0 <= 0 ? t : root(L->ux, L->uy, B, A, 0, rate);
+    if (te < t) te = t;
     if (te > t1) te = t1;
     return push_event(D, te, DF_COLLAPSE, a, WK_NONE);
 }
@@ -121,7 +139,9 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     if ((p0.x - a0.x) * (p0.x - a0.x) + (p0.y - a0.y) * (p0.y - a0.y) <= c2 ||
         (p0.x - b0.x) * (p0.x - b0.x) + (p0.y - b0.y) * (p0.y - b0.y) <= c2)
         return WK_OK;
-    double te = g0 <= 0 ? t : t + (t1 - t) * (g0 / (g0 - g1)); /* 004 eq. 28-30 */
+    /* 004 eq. 28-30 on g's own coefficients (see test_swap) */
+    double te = g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate);
+    if (te < t) te = t;
     if (te > t1) te = t1;
     wk_point q = df_pos(V, te), qa = df_pos(A, te), qb = df_pos(B, te);
     double s = L->ux * (q.x - qa.x) + L->uy * (q.y - qa.y);
