@@ -13,6 +13,7 @@
 #include "wskel.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,6 +45,8 @@ static const char usage_text[] =
     "                     'lower' (default, the lower weight edge survives, as in\n"
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
     "  --threads N        OpenMP threads for variants that use them (default 1)\n"
+    "  --height H         stop at t = H and close the roof with a cap at t = H\n"
+    "                     (deforming; required when a weight is <= 0)\n"
     "  --step S           variants that advance in time steps (deforming): the\n"
     "                     first increment times S (default 1); the skeleton\n"
     "                     does not depend on it\n"
@@ -109,6 +112,7 @@ int main(int argc, char **argv) {
     wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
     int threads = 1;
     double step_scale = 1;
+    double height = 0;
 
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -187,6 +191,14 @@ int main(int argc, char **argv) {
             if (end == v || *end || x < 1 || x > 1024)
                 return usage_error("--threads must be an integer in 1..1024 (got '%s')", v);
             threads = (int)x;
+        } else if (!strcmp(a, "--height")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            char *end;
+            double x = strtod(v, &end);
+            if (end == v || *end || !(x > 0) || !isfinite(x))
+                return usage_error("--height must be a positive number (got '%s')", v);
+            height = x;
         } else if (!strcmp(a, "--step")) {
             NEED_ARG();
             const char *v = argv[++i];
@@ -227,6 +239,12 @@ int main(int argc, char **argv) {
     R.opt.collinear = collinear;
     R.opt.threads = threads;
     R.opt.step_scale = step_scale;
+    R.opt.height = height;
+    /* weights <= 0 are input only for a variant that takes them: the
+    ** readers refuse them otherwise, naming the edge */
+    R.opt.nonpositive_weights = (wk_variant_flags(V) & WK_VARIANT_NONPOSITIVE_WEIGHTS) != 0;
+    if (height > 0 && !R.opt.nonpositive_weights)
+        return usage_error("variant %s does not take --height (deforming does)", wk_variant_name(V));
     R.opt.check_invariants = check_invariants;
 
     int rc = 0;
@@ -240,6 +258,15 @@ int main(int argc, char **argv) {
         rc = report(&R, verbose);
         goto done;
     }
+    for (uint32_t i = 0; i < P->n && !(height > 0); i++)
+        if (!(P->w[i] > 0)) {
+            WK_FAIL(&R, WK_EINPUT, P->name, 0,
+                    "edge %u has weight %g <= 0: the wavefront need not vanish, so --height H "
+                    "(where the roof is cut) is required",
+                    wk_polygon_input_edge(P, i), P->w[i]);
+            rc = report(&R, verbose);
+            goto done;
+        }
     if (!(wk_variant_flags(V) & WK_VARIANT_WEIGHTS)) {
         for (uint32_t i = 0; i < P->n; i++)
             if (P->w[i] != 1.0) {

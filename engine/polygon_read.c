@@ -869,7 +869,7 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
         G.dst[i] = end[1];
         int got = key_number(e, &kw, &G.ew[i], &where, bad, sizeof bad);
         if (got == 0) G.ew[i] = 1.0;
-        if (got < 0 || (got > 0 && !(G.ew[i] > 0))) {
+        if (got < 0 || (got > 0 && !(G.ew[i] > 0) && !R->opt.nonpositive_weights)) {
             describe_element(e, "edge", i, d1, sizeof d1);
             if (got == -2)
                 st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
@@ -879,7 +879,9 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
                              "%s: edge-weight '%s' is not a finite number", d1, bad);
             else
                 st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
-                             "weight of %s must be > 0 (got %g)", d1, G.ew[i]);
+                             "weight of %s must be > 0 (got %g); zero and negative weights "
+                             "need --variant deforming (with --height H)",
+                             d1, G.ew[i]);
             goto done;
         }
         double add = 0;

@@ -21,6 +21,30 @@ static inline wk_status wk_write_begin(wk_run *R, const wk_polygon *P, const wk_
     return wk_faces_check_ids(R, P, S, what);
 }
 
+/* For the writers that can show a cap (json, text): the checks of
+** wk_write_begin, except that one side of an arc may be WK_NONE (the cap of
+** a skeleton cut at a height, wk_options.height). */
+static inline wk_status wk_write_begin_capped(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                              const char *what) {
+    errno = 0;
+    if (S->n_input != P->n || S->n_nodes < P->n)
+        return WK_FAIL(R, WK_EINVALID, P->name, 0, "%sthe skeleton is not of this polygon", what);
+    for (uint32_t i = 0; i < S->n_arcs; i++) {
+        const wk_arc *c = &S->arcs[i];
+        bool faces_ok = (c->left < P->n || c->left == WK_NONE) &&
+                        (c->right < P->n || c->right == WK_NONE) && c->left != c->right;
+        if (c->a >= S->n_nodes || c->b >= S->n_nodes || c->a == c->b || !faces_ok)
+            return WK_FAIL(R, WK_EINVALID, P->name, 0, "%sarc %u [%u, %u, %u, %u] is malformed",
+                           what, i, c->a, c->b, c->left, c->right);
+    }
+    return WK_OK;
+}
+
+/* A face in output numbering: the input edge, or -1 for the cap. */
+static inline long long wk_write_face(const wk_polygon *P, uint32_t e) {
+    return e == WK_NONE ? -1 : (long long)wk_polygon_input_edge(P, e);
+}
+
 /* Flush f and report any error the stream has seen since it was opened. */
 static inline wk_status wk_write_end(wk_run *R, FILE *f, const char *format) {
     if (fflush(f) != 0 || ferror(f))

@@ -216,6 +216,13 @@ typedef struct wk_options {
                                 (O(n) each: for tests, --check-invariants) */
     double tol_scale;        /* the simulation's tolerances times this (1;
                                 wk_solve_checked raises it on a retry) */
+    bool nonpositive_weights; /* the readers and wk_polygon_from_* accept
+                                weights <= 0 (set it only for a variant with
+                                WK_VARIANT_NONPOSITIVE_WEIGHTS) */
+    double height;           /* > 0: stop at t = height and close the roof
+                                with a cap (--height; required with weights
+                                <= 0, where the wavefront need not vanish);
+                                0: run until the wavefront vanishes */
     double step_scale;       /* variants that advance in time steps (the
                                 deforming variant): the first increment
                                 times this (1; --step); the skeleton must
@@ -495,6 +502,9 @@ static inline wk_seg_meet wk_segments_meet_counted(wk_run *R, wk_point a, wk_poi
 /* ------------------------------------------------------------- skeleton */
 
 typedef struct wk_node { double x, y, t; } wk_node;
+/* left/right: input edges (stored numbering).  Only a skeleton cut at a
+** height (wk_options.height) has arcs with WK_NONE on one side: the cap,
+** the wavefront at t = height, whose face is no edge's. */
 typedef struct wk_arc { uint32_t a, b, left, right; } wk_arc;
 
 typedef struct wk_skeleton {
@@ -541,6 +551,12 @@ typedef struct wk_validate_report {
 ** property in R->err.  rep may be NULL. */
 wk_status wk_validate(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
                       wk_validate_report *rep);
+/* The checks for weights of any sign and for a skeleton cut at a height
+** (engine/validate_general.c says what they prove and what they cannot with
+** overhangs); wk_validate takes this path by itself when R->opt.height > 0
+** or a weight is <= 0.  area_error is not computed (0). */
+wk_status wk_validate_general(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
+                              wk_validate_report *rep);
 
 /* -------------------------------------------------------------- writers */
 
@@ -590,6 +606,11 @@ wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, ui
 ** may ask of one. */
 #define WK_VARIANT_WEIGHTS 1u /* handles non-unit weights */
 #define WK_VARIANT_USES_K 2u  /* the k option matters */
+/* takes weights <= 0 (zero: a stationary edge, a wall; negative: an edge
+** moving outward, an overhang) and --height (wk_options.height): the
+** readers accept such weights only when R->opt.nonpositive_weights says the
+** chosen variant has this flag */
+#define WK_VARIANT_NONPOSITIVE_WEIGHTS 4u
 const char *wk_variant_name(const wk_variant *V);
 const char *wk_variant_summary(const wk_variant *V);
 unsigned wk_variant_flags(const wk_variant *V); /* WK_VARIANT_* */

@@ -65,14 +65,18 @@ static wk_status df_start(df_state *D) {
     if (!D->L) return R->err.code;
     D->wmax = 0;
     for (uint32_t e = 0; e < P->n; e++) {
-        if (!(P->w[e] > 0))
-            return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
-                           "deforming: weight of edge %u is %g; only positive weights are "
-                           "supported so far",
-                           wk_polygon_input_edge(P, e), P->w[e]);
+        if (!(P->w[e] > 0)) {
+            D->nonpositive = true;
+            if (!(R->opt.height > 0))
+                return WK_FAIL(R, WK_EINPUT, P->name, 0,
+                               "edge %u has weight %g <= 0: the wavefront need not vanish, so a "
+                               "height (--height H) is required",
+                               wk_polygon_input_edge(P, e), P->w[e]);
+        }
         wk_offset_line_of_edge_at(P, e, D->o, &D->L[e]);
-        if (P->w[e] > D->wmax) D->wmax = P->w[e];
+        if (fabs(P->w[e]) > D->wmax) D->wmax = fabs(P->w[e]);
     }
+    if (!(D->wmax > 0)) D->wmax = 1; /* every edge a wall: times are heights */
     double scale = wk_polygon_scale(P);
     D->eps_d = R->opt.tol_scale * WK_TOL_REL * scale;
     D->eps_t = WK_TOL_TIME * D->eps_d / D->wmax;
@@ -97,17 +101,48 @@ static wk_status df_start(df_state *D) {
     return WK_OK;
 }
 
+/* The roof cut at height H: every alive vertex ends at its position at H
+** (an arc of its trace), and every piece becomes a cap arc between the
+** nodes of its ends, its edge's face on the right (behind the piece) and
+** the cap (WK_NONE) on the left (the unswept region). */
+static wk_status df_cap(df_state *D, double H) {
+    wk_run *R = D->R;
+    uint32_t *node = WK_NEW_ARRAY(R, uint32_t, D->nv);
+    if (!node) return R->err.code;
+    wk_status st = WK_OK;
+    for (uint32_t i = 0; i < D->nv && st == WK_OK; i++) {
+        const df_vertex *V = &D->v[i];
+        if (!V->alive) continue;
+        if (V->t0 == H) {
+            node[i] = V->node;
+            continue;
+        }
+        wk_point q = df_pos(V, H);
+        if ((st = wk_skeleton_add_node(R, D->S, q.x + D->o.x, q.y + D->o.y, H, &node[i])) == WK_OK)
+            st = wk_skeleton_add_arc(R, D->S, V->node, node[i], V->ein, V->eout);
+    }
+    for (uint32_t i = 0; i < D->nv && st == WK_OK; i++) {
+        const df_vertex *V = &D->v[i];
+        if (V->alive && node[i] != node[V->next])
+            st = wk_skeleton_add_arc(R, D->S, node[i], node[V->next], WK_NONE, V->eout);
+    }
+    WK_FREE_ARRAY(R, node, D->nv);
+    return st;
+}
+
 static wk_status df_simulate(df_state *D) {
     wk_run *R = D->R;
     /* Each resolution at one time ends at least one vertex of the input's
     ** O(n) events; many more resolutions at one time than that is a loop. */
     uint64_t same_time = 0;
-    while (D->n_alive > 0) {
+    double H = R->opt.height;
+    while (D->n_alive > 0 && !(H > 0 && D->t >= H)) {
         double te;
+        if (H > 0 && D->t + D->dt > H) D->dt = H - D->t;
         if (df_predict(D, &te) != WK_OK) return R->err.code;
         if (D->n_ev == 0) {
             wk_count(R, WK_VC_event_free_steps, 1);
-            D->t += D->dt;
+            D->t = H > 0 && D->t + D->dt >= H ? H : D->t + D->dt;
             D->dt *= 2;
             if (!isfinite(D->t))
                 return WK_FAIL(R, WK_EALGO, D->P->name, 0,
@@ -128,6 +163,7 @@ static wk_status df_simulate(df_state *D) {
         if (getenv("DF_DEBUG")) { fprintf(stderr, "t=%.17g nev=%u alive=%u dt=%g tests=%llu\n", te, D->n_ev, D->n_alive, D->dt, (unsigned long long)D->last_tests); for (uint32_t q = 0; q < D->n_ev; q++) { df_vertex *A = &D->v[D->ev[q].a]; fprintf(stderr, "  ev kind %u a %u (ein %u eout %u prev %u next %u) b %u t %.17g\n", D->ev[q].kind, D->ev[q].a, A->ein, A->eout, A->prev, A->next, D->ev[q].b, D->ev[q].t); } }
         if (df_resolve(D, te) != WK_OK) return R->err.code;
     }
+    if (D->n_alive > 0 && df_cap(D, H) != WK_OK) return R->err.code;
     return wk_skeleton_merge_pass_through(R, D->S);
 }
 
@@ -153,6 +189,10 @@ static wk_status deforming_run(wk_run *R, const wk_polygon *P, wk_skeleton **out
         *out = NULL;
     }
     if (st != WK_EALGO && st != WK_EINVALID) return st;
+    /* the reference takes positive weights and no height only */
+    if (R->opt.height > 0) return st;
+    for (uint32_t e = 0; e < P->n; e++)
+        if (!(P->w[e] > 0)) return st;
     if (getenv("DF_DEBUG")) fprintf(stderr, "DF fallback: %s\n", R->err.msg);
     return wk_solve_by_reference(R, P, WK_VC_reference_fallbacks, out);
 }
@@ -161,8 +201,8 @@ static const wk_counter_def df_counters[] = WK_VARIANT_COUNTER_TABLE(DF_COUNTER_
 
 const wk_variant wk_variant_deforming = {
     "deforming",
-    "deforming polygon, predictor-corrector steps (004); positive weights, holes",
-    WK_VARIANT_WEIGHTS,
+    "deforming polygon, predictor-corrector steps (004); any weights (<= 0 with --height), holes",
+    WK_VARIANT_WEIGHTS | WK_VARIANT_NONPOSITIVE_WEIGHTS,
     df_counters,
     sizeof df_counters / sizeof df_counters[0],
     deforming_run,

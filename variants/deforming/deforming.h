@@ -60,7 +60,8 @@ typedef struct df_state {
     wk_offset_line *L;    /* offset line of each input edge, relative */
     double eps_d;         /* distance tolerance (tolerance.h policy) */
     double eps_t;         /* events within this of the earliest are one group */
-    double wmax;
+    double wmax;          /* largest |weight| (1 if every edge is a wall) */
+    bool nonpositive;     /* some weight is <= 0 */
     double t;             /* present */
     double dt;            /* the next step's increment (the step-size policy) */
     uint64_t last_tests;  /* penetration tests of the last step */

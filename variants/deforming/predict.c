@@ -118,9 +118,24 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     double g0 = wk_offset_distance(L, df_pos(V, t), t);
     double g1 = wk_offset_distance(L, df_pos(V, t1), t1);
     double rate = L->nx * V->v.x + L->ny * V->v.y - L->w;
-    double speed = fabs(V->v.x) + fabs(V->v.y) + L->w;
-    /* approaching from the inside (positive weights: the wavefront is on
-    ** the inner side of each of its pieces) and on the line by t1 */
+    double speed = fabs(V->v.x) + fabs(V->v.y) + fabs(L->w);
+    /* From the outside (004 Fig. 11b): with outward edges two parts of the
+    ** wavefront can meet across the swept region, which this variant does
+    ** not resolve: it says so rather than answer wrongly. */
+    if (D->nonpositive && g0 < -eps_c && rate > WK_APPROACH_REL * speed && g1 >= 0) {
+        double tx = root(L->nx, L->ny, V, NULL, L->c, rate);
+        wk_point q = df_pos(V, tx), qa = df_pos(A, tx), qb = df_pos(B, tx);
+        double s = L->ux * (q.x - qa.x) + L->uy * (q.y - qa.y);
+        double len = L->ux * (qb.x - qa.x) + L->uy * (qb.y - qa.y);
+        if (s > eps_c && s < len - eps_c)
+            return WK_FAIL(D->R, WK_EALGO, D->P->name, 0,
+                           "deforming: the wavefront meets itself from outside (a vertex reaches "
+                           "the piece of edge %u across the swept region at t = %.17g): not "
+                           "supported",
+                           wk_polygon_input_edge(D->P, A->eout), tx);
+    }
+    /* approaching from the inside (the wavefront is on the inner side of
+    ** each of its pieces) and on the line by t1 */
     if (g0 < -eps_c || !(rate < -WK_APPROACH_REL * speed) || g1 > 0) return WK_OK;
     /* The vertex must meet the piece from the unswept side: one of its own
     ** pieces leaves it into that side or along the line (n . direction >
