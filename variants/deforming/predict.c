@@ -103,6 +103,15 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     ** on where the step started (simultaneous events stay simultaneous
     ** whatever the increment); l0 <= 0 is an event now. */
     double te = l0 <= 0 ? t : root(L->ux, L->uy, B, A, 0, rate);
+    /* Between nearly parallel edges the vertices are fast and l's root is
+    ** ill-conditioned; the time where the three offset lines meet comes
+    ** from the input lines alone (as CGAL's trisegments and the engine's
+    ** edge events), so it is taken when it falls in the step. */
+    wk_point m;
+    double t3;
+    if (l0 > 0 && wk_three_lines_meet(&D->L[A->ein], L, &D->L[B->eout], &m, &t3) && t3 >= t &&
+        t3 <= t1)
+        te = t3;
     if (te < t) te = t;
     if (te > t1) te = t1;
     return push_event(D, te, DF_COLLAPSE, a, WK_NONE);
