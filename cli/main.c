@@ -45,6 +45,9 @@ static const char usage_text[] =
     "                     'lower' (default, the lower weight edge survives, as in\n"
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
     "  --threads N        OpenMP threads for variants that use them (default 1)\n"
+    "  --angles           the third column (GraphML: edge-weight) is the roof's\n"
+    "                     pitch in degrees (0..180), weight 1/tan(pitch): 90 a\n"
+    "                     wall (0), above 90 an overhang (< 0)\n"
     "  --height H         stop at t = H and close the roof with a cap at t = H\n"
     "                     (deforming; required when a weight is <= 0)\n"
     "  --step S           variants that advance in time steps (deforming): the\n"
@@ -113,6 +116,7 @@ int main(int argc, char **argv) {
     int threads = 1;
     double step_scale = 1;
     double height = 0;
+    bool angles = false;
 
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -191,6 +195,8 @@ int main(int argc, char **argv) {
             if (end == v || *end || x < 1 || x > 1024)
                 return usage_error("--threads must be an integer in 1..1024 (got '%s')", v);
             threads = (int)x;
+        } else if (!strcmp(a, "--angles")) {
+            angles = true;
         } else if (!strcmp(a, "--height")) {
             NEED_ARG();
             const char *v = argv[++i];
@@ -240,6 +246,7 @@ int main(int argc, char **argv) {
     R.opt.threads = threads;
     R.opt.step_scale = step_scale;
     R.opt.height = height;
+    R.opt.angles = angles;
     /* weights <= 0 are input only for a variant that takes them: the
     ** readers refuse them otherwise, naming the edge */
     R.opt.nonpositive_weights = (wk_variant_flags(V) & WK_VARIANT_NONPOSITIVE_WEIGHTS) != 0;

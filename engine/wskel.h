@@ -223,6 +223,10 @@ typedef struct wk_options {
                                 with a cap (--height; required with weights
                                 <= 0, where the wavefront need not vanish);
                                 0: run until the wavefront vanishes */
+    bool angles;             /* the readers take the third column (GraphML:
+                                edge-weight) as the roof's pitch in degrees,
+                                w = 1 / tan(pitch): 90 a wall (0), above 90
+                                an overhang (< 0); --angles */
     double step_scale;       /* variants that advance in time steps (the
                                 deforming variant): the first increment
                                 times this (1; --step); the skeleton must
@@ -423,6 +427,9 @@ wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out);
 wk_status wk_polygon_read_wpoly(wk_run *R, FILE *f, const char *name, wk_polygon **out);
 wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const char *name,
                                   wk_polygon **out);
+/* The weight of a roof pitch of `degrees` (0 < degrees < 180; 90 gives
+** exactly 0): 1 / tan.  WK_EINPUT naming name and line otherwise. */
+wk_status wk_weight_of_angle(wk_run *R, double degrees, const char *name, long line, double *w);
 /* Write .wpoly (counter-clockwise, as stored). */
 wk_status wk_polygon_write_wpoly(wk_run *R, FILE *f, const wk_polygon *P);
 void wk_polygon_free(wk_run *R, wk_polygon *P);

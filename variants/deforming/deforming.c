@@ -54,6 +54,7 @@ static void df_free(df_state *D) {
     WK_FREE_ARRAY(R, D->cell_items, D->cap_cell_items);
     WK_FREE_ARRAY(R, D->big, D->cap_big);
     WK_FREE_ARRAY(R, D->stamp, D->cap_stamp);
+    WK_FREE_ARRAY(R, D->cell_mark, D->cap_cell_mark);
 }
 
 /* The input vertices: vertex i between edges prev(i) and i. */

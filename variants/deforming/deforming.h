@@ -77,8 +77,8 @@ typedef struct df_state {
     /* step scratch: alive ids, grid */
     uint32_t *ids;
     uint32_t cap_ids;
-    uint32_t *cell_start, *cell_items, *big, *stamp;
-    uint32_t cap_cell_start, cap_cell_items, cap_big, cap_stamp;
+    uint32_t *cell_start, *cell_items, *big, *stamp, *cell_mark;
+    uint32_t cap_cell_start, cap_cell_items, cap_big, cap_stamp, cap_cell_mark;
 } df_state;
 
 static inline wk_point df_pos(const df_vertex *V, double t) {

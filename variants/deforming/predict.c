@@ -221,31 +221,48 @@ wk_status df_predict(df_state *D, double *t_event) {
     for (uint32_t c = 0; c <= nc; c++) D->cell_start[c] = 0;
     for (uint32_t i = 0; i < D->nv; i++) D->stamp[i] = WK_NONE;
     uint32_t n_big = 0;
-    /* pass 1: count the cells of each piece's swept box */
+    /* Pass 0 counts the cells of each piece, pass 1 fills them.  A long
+    ** piece is cut into parts about one cell long, each entered in the
+    ** cells of its swept box (a long diagonal piece would otherwise fill a
+    ** square of cells); a cell takes a piece once (cell_mark). */
+    if (WK_GROW(R, D->cell_mark, D->cap_cell_mark, nc) != WK_OK) return R->err.code;
+    double cell = G.cw < G.ch ? G.cw : G.ch;
     for (int pass = 0; pass < 2; pass++) {
+        for (uint32_t c = 0; c < nc; c++) D->cell_mark[c] = WK_NONE;
         for (uint32_t k = 0; k < m; k++) {
             uint32_t a = D->ids[k];
             const df_vertex *A = &D->v[a], *B = &D->v[A->next];
-            box b = box_of(df_pos(A, t));
-            box_add(&b, df_pos(A, t1));
-            box_add(&b, df_pos(B, t));
-            box_add(&b, df_pos(B, t1));
-            uint32_t i0, j0, i1, j1;
-            if (!cells(&G, b, eps_c, &i0, &j0, &i1, &j1)) {
-                if (pass == 0) {
-                    if (WK_GROW(R, D->big, D->cap_big, n_big + 1) != WK_OK) return R->err.code;
-                    D->big[n_big++] = a;
+            wk_point a0 = df_pos(A, t), a1 = df_pos(A, t1), b0 = df_pos(B, t), b1 = df_pos(B, t1);
+            double len = fmax(hypot(b0.x - a0.x, b0.y - a0.y), hypot(b1.x - a1.x, b1.y - a1.y));
+            double parts = ceil(len / cell);
+            uint32_t np = parts < 1 ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
+            bool big = false;
+            for (uint32_t s = 0; s < np && !big; s++) {
+                double f0 = (double)s / np, f1 = (double)(s + 1) / np;
+                box b = box_of((wk_point){a0.x + f0 * (b0.x - a0.x), a0.y + f0 * (b0.y - a0.y)});
+                box_add(&b, (wk_point){a0.x + f1 * (b0.x - a0.x), a0.y + f1 * (b0.y - a0.y)});
+                box_add(&b, (wk_point){a1.x + f0 * (b1.x - a1.x), a1.y + f0 * (b1.y - a1.y)});
+                box_add(&b, (wk_point){a1.x + f1 * (b1.x - a1.x), a1.y + f1 * (b1.y - a1.y)});
+                uint32_t i0, j0, i1, j1;
+                if (!cells(&G, b, eps_c, &i0, &j0, &i1, &j1)) {
+                    big = true;
+                    break;
                 }
-                continue;
+                for (uint32_t j = j0; j <= j1; j++)
+                    for (uint32_t i = i0; i <= i1; i++) {
+                        uint32_t c = j * g + i;
+                        if (D->cell_mark[c] == a) continue;
+                        D->cell_mark[c] = a;
+                        if (pass == 0)
+                            D->cell_start[c + 1]++;
+                        else
+                            D->cell_items[D->cell_start[c]++] = a;
+                    }
             }
-            for (uint32_t j = j0; j <= j1; j++)
-                for (uint32_t i = i0; i <= i1; i++) {
-                    uint32_t c = j * g + i;
-                    if (pass == 0)
-                        D->cell_start[c + 1]++;
-                    else
-                        D->cell_items[D->cell_start[c]++] = a;
-                }
+            if (big && pass == 0) {
+                if (WK_GROW(R, D->big, D->cap_big, n_big + 1) != WK_OK) return R->err.code;
+                D->big[n_big++] = a;
+            }
         }
         if (pass == 0) {
             for (uint32_t c = 0; c < nc; c++) D->cell_start[c + 1] += D->cell_start[c];
@@ -261,27 +278,41 @@ wk_status df_predict(df_state *D, double *t_event) {
     for (uint32_t k = 0; k < m; k++) {
         uint32_t p = D->ids[k];
         const df_vertex *V = &D->v[p];
-        box b = box_of(df_pos(V, t));
-        box_add(&b, df_pos(V, t1));
-        uint32_t i0, j0, i1, j1;
-        if (!cells(&G, b, eps_c, &i0, &j0, &i1, &j1)) {
+        /* the path, cut into parts about one cell long (a fast vertex's
+        ** path crosses many cells, its box far more) */
+        wk_point p0 = df_pos(V, t), p1 = df_pos(V, t1);
+        double parts = ceil(hypot(p1.x - p0.x, p1.y - p0.y) / cell);
+        uint32_t np = parts < 1 ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
+        bool all = false;
+        for (uint32_t s = 0; s < np && !all; s++) {
+            double f0 = (double)s / np, f1 = (double)(s + 1) / np;
+            box b = box_of((wk_point){p0.x + f0 * (p1.x - p0.x), p0.y + f0 * (p1.y - p0.y)});
+            box_add(&b, (wk_point){p0.x + f1 * (p1.x - p0.x), p0.y + f1 * (p1.y - p0.y)});
+            uint32_t i0, j0, i1, j1;
+            if (!cells(&G, b, eps_c, &i0, &j0, &i1, &j1)) {
+                all = true;
+                break;
+            }
+            for (uint32_t j = j0; j <= j1; j++)
+                for (uint32_t i = i0; i <= i1; i++) {
+                    uint32_t c = j * g + i;
+                    for (uint32_t q = D->cell_start[c]; q < D->cell_start[c + 1]; q++) {
+                        uint32_t a = D->cell_items[q];
+                        if (D->stamp[a] == p) continue;
+                        D->stamp[a] = p;
+                        tests++;
+                        if (test_penetration(D, p, a, t, t1, eps_c) != WK_OK) return R->err.code;
+                    }
+                }
+        }
+        if (all) {
             for (uint32_t q = 0; q < m; q++) {
+                if (D->stamp[D->ids[q]] == p) continue;
                 tests++;
                 if (test_penetration(D, p, D->ids[q], t, t1, eps_c) != WK_OK) return R->err.code;
             }
             continue;
         }
-        for (uint32_t j = j0; j <= j1; j++)
-            for (uint32_t i = i0; i <= i1; i++) {
-                uint32_t c = j * g + i;
-                for (uint32_t s = D->cell_start[c]; s < D->cell_start[c + 1]; s++) {
-                    uint32_t a = D->cell_items[s];
-                    if (D->stamp[a] == p) continue;
-                    D->stamp[a] = p;
-                    tests++;
-                    if (test_penetration(D, p, a, t, t1, eps_c) != WK_OK) return R->err.code;
-                }
-            }
         for (uint32_t q = 0; q < n_big; q++) {
             tests++;
             if (test_penetration(D, p, D->big[q], t, t1, eps_c) != WK_OK) return R->err.code;
