@@ -18,6 +18,12 @@
 static inline wk_status wk_write_begin(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                                        const char *what) {
     errno = 0; /* so that wk_write_end reports this stream's error */
+    for (uint32_t i = 0; i < S->n_arcs; i++)
+        if (S->arcs[i].left == WK_NONE || S->arcs[i].right == WK_NONE)
+            return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                           "%sa roof cut at a height (its cap, --height) is not written in this "
+                           "format yet; use --format json or text",
+                           what);
     return wk_faces_check_ids(R, P, S, what);
 }
 
