@@ -414,6 +414,12 @@ static wk_status report_intersection(wk_run *R, const sweep *S, const char *name
 
 /* ---- validation ---- */
 
+/* The variant to suggest for weights <= 0 (the registry says which). */
+static const char *nonpositive_variant(void) {
+    const char *v = wk_variant_with_flags(WK_VARIANT_NONPOSITIVE_WEIGHTS);
+    return v ? v : "(none registered)";
+}
+
 /* The checks that need no memory: finite and bounded coordinates, weights. */
 static wk_status check_values(wk_run *R, const wk_point *p, const double *w, uint32_t n,
                               const char *name, const long *lines) {
@@ -442,8 +448,8 @@ static wk_status check_values(wk_run *R, const wk_point *p, const double *w, uin
             if (!(w[i] > 0) && !R->opt.nonpositive_weights)
                 return WK_FAIL(R, WK_EINPUT, name, line_of(lines, i),
                                "weight of edge %u must be > 0 (got %g); zero and negative "
-                               "weights need --variant deforming (with --height H)",
-                               i, w[i]);
+                               "weights need --variant %s (with --height H)",
+                               i, w[i], nonpositive_variant());
         }
     if (w) {
         /* the ratio of the positive weights (zero and negative ones, where

@@ -886,8 +886,11 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
             else
                 st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
                              "weight of %s must be > 0 (got %g); zero and negative weights "
-                             "need --variant deforming (with --height H)",
-                             d1, G.ew[i]);
+                             "need --variant %s (with --height H)",
+                             d1, G.ew[i],
+                             wk_variant_with_flags(WK_VARIANT_NONPOSITIVE_WEIGHTS)
+                                 ? wk_variant_with_flags(WK_VARIANT_NONPOSITIVE_WEIGHTS)
+                                 : "(none registered)");
             goto done;
         }
         double add = 0;

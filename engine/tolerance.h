@@ -44,7 +44,7 @@
 ** again; 1e-9 leaves room for the error of a constructed event while staying
 ** 1000 times below the validator's default (WK_VALIDATE_TOL_REL). */
 #define WK_TOL_REL 1e-9
-/* The deforming variant (004): a vertex within WK_DEFORM_CONTACT_SLACK *
+/* A variant that steps a moving polygon (004): a vertex within WK_DEFORM_CONTACT_SLACK *
 ** eps_d of an event point takes part in it, and a penetration counts when
 ** the vertex meets the piece within that distance of the piece's ends (a
 ** vertex-on-vertex contact).  16 as WK_REFINE_DIST_SLACK: the error of a

@@ -227,8 +227,8 @@ typedef struct wk_options {
                                 edge-weight) as the roof's pitch in degrees,
                                 w = 1 / tan(pitch): 90 a wall (0), above 90
                                 an overhang (< 0); --angles */
-    double step_scale;       /* variants that advance in time steps (the
-                                deforming variant): the first increment
+    double step_scale;       /* variants that advance in time steps (004's
+                                predictor-corrector): the first increment
                                 times this (1; --step); the skeleton must
                                 not depend on it */
 } wk_options;
@@ -622,6 +622,9 @@ const char *wk_variant_name(const wk_variant *V);
 const char *wk_variant_summary(const wk_variant *V);
 unsigned wk_variant_flags(const wk_variant *V); /* WK_VARIANT_* */
 
+/* The name of the first registered variant with all of `flags`, or NULL
+** (messages that suggest a variant without the engine naming one). */
+const char *wk_variant_with_flags(unsigned flags);
 /* NULL-terminated registry lookup; NULL if unknown. */
 const wk_variant *wk_variant_find(const char *name);
 /* i-th registered variant, NULL past the end. */
