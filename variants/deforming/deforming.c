@@ -25,7 +25,6 @@
 
 #include <math.h>
 #include <string.h>
-#include <stdlib.h>
 
 wk_status df_add_vertex(df_state *D, const df_vertex *V, uint32_t *id) {
     wk_run *R = D->R;
@@ -161,7 +160,6 @@ static wk_status df_simulate(df_state *D) {
         ** come at about that rate), the same when it did not advance */
         if (te > D->t) D->dt = 2 * (te - D->t);
         D->t = te;
-        if (getenv("DF_DEBUG")) { fprintf(stderr, "t=%.17g nev=%u alive=%u dt=%g tests=%llu\n", te, D->n_ev, D->n_alive, D->dt, (unsigned long long)D->last_tests); for (uint32_t q = 0; q < D->n_ev; q++) { df_vertex *A = &D->v[D->ev[q].a]; fprintf(stderr, "  ev kind %u a %u (ein %u eout %u prev %u next %u) b %u t %.17g\n", D->ev[q].kind, D->ev[q].a, A->ein, A->eout, A->prev, A->next, D->ev[q].b, D->ev[q].t); } }
         if (df_resolve(D, te) != WK_OK) return R->err.code;
     }
     if (D->n_alive > 0 && df_cap(D, H) != WK_OK) return R->err.code;
@@ -194,7 +192,6 @@ static wk_status deforming_run(wk_run *R, const wk_polygon *P, wk_skeleton **out
     if (R->opt.height > 0) return st;
     for (uint32_t e = 0; e < P->n; e++)
         if (!(P->w[e] > 0)) return st;
-    if (getenv("DF_DEBUG")) fprintf(stderr, "DF fallback: %s\n", R->err.msg);
     return wk_solve_by_reference(R, P, WK_VC_reference_fallbacks, out);
 }
 

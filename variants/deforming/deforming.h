@@ -65,6 +65,7 @@ typedef struct df_state {
     double t;             /* present */
     double dt;            /* the next step's increment (the step-size policy) */
     uint64_t last_tests;  /* penetration tests of the last step */
+    double best;          /* the earliest event time found so far in a step */
     df_vertex *v;
     uint32_t nv, cap_v, n_alive;
     df_event *ev;

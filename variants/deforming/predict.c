@@ -65,7 +65,12 @@ static bool cells(const grid *G, box b, double pad, uint32_t *i0, uint32_t *j0, 
     return (uint64_t)(*i1 - *i0 + 1) * (*j1 - *j0 + 1) <= DF_GRID_BIG;
 }
 
+/* Only the earliest events of a step matter (the corrector goes back to
+** the first one): an event later than the best so far plus eps_t is
+** dropped at once, so a long step does not collect every later event. */
 static wk_status push_event(df_state *D, double t, uint32_t kind, uint32_t a, uint32_t b) {
+    if (t > D->best + D->eps_t) return WK_OK;
+    if (t < D->best) D->best = t;
     if (WK_GROW(D->R, D->ev, D->cap_ev, D->n_ev + 1) != WK_OK) return D->R->err.code;
     D->ev[D->n_ev++] = (df_event){t, kind, a, b};
     return WK_OK;
@@ -188,6 +193,7 @@ wk_status df_predict(df_state *D, double *t_event) {
     double t = D->t, t1 = D->t + D->dt;
     double eps_c = WK_DEFORM_CONTACT_SLACK * D->eps_d;
     D->n_ev = 0;
+    D->best = INFINITY;
     *t_event = INFINITY;
     wk_count(R, WK_VC_steps, 1);
     /* alive vertices in id order (deterministic) */
