@@ -22,10 +22,13 @@ static inline wk_status wk_write_begin(wk_run *R, const wk_polygon *P, const wk_
         if (S->arcs[i].left == WK_NONE || S->arcs[i].right == WK_NONE)
             return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
                            "%sa roof cut at a height (its cap, --height) is not written in this "
-                           "format yet; use --format json or text",
+                           "format yet; use --format json, text or obj",
                            what);
     return wk_faces_check_ids(R, P, S, what);
 }
+
+/* The OBJ roof of a skeleton with a cap (write_obj_capped.c). */
+wk_status wk_write_obj_capped(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
 
 /* For the writers that can show a cap (json, text): the checks of
 ** wk_write_begin, except that one side of an arc may be WK_NONE (the cap of

@@ -173,6 +173,25 @@ class Deforming(unittest.TestCase):
         ys = sorted({round(sk["nodes"][a][1], 9) for a, b, l, r in caps})
         self.assertEqual(ys, [1, 3])
 
+    def test_obj_roof_with_walls_and_cap(self):
+        # the gable cut at H = 1 as OBJ: four faces (two of them vertical
+        # walls on x = 0 and x = 10) and the cap at z = 1
+        path = tl.write_wpoly(os.path.join(self.tmp, "gable.wpoly"),
+                              [(0, 0), (10, 0), (10, 4), (0, 4)], [1, 0, 1, 0])
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", "1",
+                               "--format", "obj", path])
+        self.assertEqual(rc, 0, err)
+        vs = [tuple(map(float, l.split()[1:])) for l in out.splitlines() if l.startswith("v ")]
+        fs = [[int(x) - 1 for x in l.split()[1:]] for l in out.splitlines() if l.startswith("f ")]
+        self.assertEqual(len(fs), 5)
+        for wall, x in ((fs[1], 10), (fs[3], 0)):
+            self.assertEqual({vs[i][0] for i in wall}, {x})
+        self.assertEqual({vs[i][2] for i in fs[4]}, {1})
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", "1",
+                               "--format", "vtp", path])
+        self.assertEqual(rc, 2)
+        self.assertIn("not written in this format yet", err)
+
     def test_square_with_one_outward_edge(self):
         # a 4 x 4 square whose bottom edge moves outward at speed 1: at t = 2
         # the left and right edges meet along x = 2 from y = -2 to y = 2
