@@ -34,10 +34,11 @@
 ** Members end with an arc from their birth node to X's node (left face:
 ** the edge before them, right face: the edge after them).
 **
-** What it cannot resolve (rays that do not alternate, two parallel edges
-** of different weight meeting: the collinear rule, a zero-width spike left
-** inside a longer cycle) is WK_EALGO: the variant then answers with the
-** reference, counted (deforming.c).
+** A zero-width spike left inside a longer cycle (antiparallel pieces of
+** different lengths) is left to the next step: the nearer end lies on the
+** other piece, a penetration at te.  What it cannot resolve (rays that do
+** not alternate around a point) is WK_EALGO: the variant then answers with
+** the reference, counted (deforming.c).
 */
 #include "deforming.h"
 
@@ -474,11 +475,10 @@ static wk_status resolve(df_state *D, double te) {
             D->n_alive -= 2;
             continue;
         }
-        wk_point vel;
-        if (wk_vertex_velocity(&D->L[D->v[x].ein], &D->L[D->v[x].eout], &vel) ==
-            WK_VEL_ANTIPARALLEL)
-            return WK_FAIL(R, WK_EALGO, D->P->name, 0,
-                           "deforming: a zero-width spike stays in a cycle at t = %.17g", te);
+        /* A zero-width spike (antiparallel pieces leaving x along one line)
+        ** left in a longer cycle: the nearer end of the two pieces lies on
+        ** the other piece now, a penetration the next step finds at te and
+        ** resolves (the spike zips up to there, an arc along it). */
     }
     uint32_t roots = 0;
     for (uint32_t k = 0; k < S->n_cl; k++) roots += find(S, k) == k;
