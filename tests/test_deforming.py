@@ -287,6 +287,28 @@ class Deforming(unittest.TestCase):
         rc, out, err = tl.run([tl.WSKEL, "--variant", "naive", "--height", "1", path])
         self.assertEqual(rc, 64, err)
 
+    def test_angles_and_option_errors(self):
+        # pitches 45 and 90 degrees are the gable roof of weights 1 and 0
+        path = os.path.join(self.tmp, "pitch.wpoly")
+        with open(path, "w") as fh:
+            fh.write("4\n0 0 45\n10 0 90\n10 4 45\n0 4 90\n")
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--angles", "--height", "5",
+                               path])
+        self.assertEqual(rc, 0, err)
+        got = tl.json.loads(out)
+        self.assertIn([4, 5, 0, 2], got["arcs"] + [[b, a, r, l] for a, b, l, r in got["arcs"]])
+        ridge = sorted(got["nodes"][4:])
+        self.assertEqual([[round(c, 9) for c in v] for v in ridge], [[0, 2, 2], [10, 2, 2]])
+        with open(path, "w") as fh:
+            fh.write("4\n0 0 45\n10 0 180\n10 4 45\n0 4 90\n")
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--angles", "--height", "5",
+                               path])
+        self.assertEqual(rc, 1, err)
+        self.assertIn(":3: pitch 180 degrees", err)
+        for bad in (["--height", "-1"], ["--height", "x"], ["--step", "0"]):
+            rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming"] + bad + [path])
+            self.assertEqual(rc, 64, (bad, err))
+
     def test_weighted_rectangle_is_answered_by_the_variant(self):
         path = os.path.join(self.tmp, "rect.wpoly")
         tl.write_wpoly(path, [(0, 0), (4, 0), (4, 2), (0, 2)], [1, 0.5, 1, 2])
