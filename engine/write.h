@@ -22,11 +22,23 @@ static inline wk_status wk_write_begin(wk_run *R, const wk_polygon *P, const wk_
         if (S->arcs[i].left == WK_NONE || S->arcs[i].right == WK_NONE)
             return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
                            "%sa roof cut at a height (its cap, --height) is not written in this "
-                           "format yet; use --format json, text or obj",
+                           "format yet; use --format json, text, obj or vtp",
                            what);
     return wk_faces_check_ids(R, P, S, what);
 }
 
+/* The faces of a roof cut at a height (write_obj_capped.c): faces
+** 0 .. n_edge_faces-1 are the input edges' in input edge order, the rest
+** the cap's cycles; face f is node[end[f-1] .. end[f]) (stored node ids),
+** counter-clockwise seen from above.  WK_EUNSUPPORTED for a face that is
+** not one simple cycle. */
+typedef struct wk_capped_faces {
+    uint32_t *node, *end;
+    uint32_t n_node, cap_node, n_faces, cap_end, n_edge_faces;
+} wk_capped_faces;
+wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                const uint32_t *edge_of, wk_capped_faces *CF, const char *what);
+void wk_capped_faces_clear(wk_run *R, wk_capped_faces *CF);
 /* The OBJ roof of a skeleton with a cap (write_obj_capped.c). */
 wk_status wk_write_obj_capped(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S);
 

@@ -1,5 +1,6 @@
 /*
-** write_obj_capped.c: the OBJ roof of a skeleton cut at a height (arcs with
+** write_obj_capped.c: the faces of a roof cut at a height, and its OBJ.
+** The faces: of a skeleton cut at a height (arcs with
 ** the cap, WK_NONE, on one side; wk_options.height): one face per input
 ** edge (walls of weight 0 are vertical faces), in input edge order, then
 ** one face per closed cycle of the cap, all counter-clockwise seen from
@@ -8,6 +9,8 @@
 ** islands, no node visited twice) and says so otherwise (WK_EUNSUPPORTED).
 */
 #include "write.h"
+
+#include <string.h>
 
 /* The next node of face f after cur, arriving from prev: the other arc of
 ** f at cur (its arcs listed in arcs[0..k)); WK_NONE if there are not
@@ -28,25 +31,25 @@ static uint32_t step(const wk_skeleton *S, const uint32_t *arcs, uint32_t k, uin
     return c->a == cur ? c->b : c->a;
 }
 
-wk_status wk_write_obj_capped(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
-    uint32_t *vertex_of = NULL, *edge_of = NULL;
-    if (wk_write_begin_capped(R, P, S, "write obj: ") != WK_OK ||
-        wk_input_order(R, P, &vertex_of, &edge_of) != WK_OK)
-        return R->err.code;
+wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                const uint32_t *edge_of, wk_capped_faces *CF, const char *what) {
+    memset(CF, 0, sizeof *CF);
     uint32_t A = S->n_arcs;
     uint32_t *arcs = WK_NEW_ARRAY(R, uint32_t, A + 1);
     uint8_t *done = WK_NEW_ARRAY(R, uint8_t, A + 1);
     wk_status st = R->err.code;
     if (!arcs || !done) goto out;
-    fputs("# wskel roof of ", f);
-    wk_write_name(f, P);
-    fprintf(f, ": %u vertices (x y t), one face per input edge, then the cap at the height\n",
-            S->n_nodes);
-    for (uint32_t i = 0; i < S->n_nodes; i++) {
-        const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
-        fprintf(f, "v %.17g %.17g %.17g\n", v->x, v->y, v->t);
-    }
-    /* faces f = 0 .. n-1 are the edges' (stored), f = n the cap */
+#define PUSH_NODE(v)                                                                   \
+    do {                                                                               \
+        if (WK_GROW(R, CF->node, CF->cap_node, CF->n_node + 1) != WK_OK) goto out;     \
+        CF->node[CF->n_node++] = (v);                                                  \
+    } while (0)
+#define END_FACE()                                                                       \
+    do {                                                                                 \
+        if (WK_GROW(R, CF->end, CF->cap_end, CF->n_faces + 1) != WK_OK) goto out;        \
+        CF->end[CF->n_faces++] = CF->n_node;                                             \
+    } while (0)
+    /* faces fi = 0 .. n-1 are the edges' (input order), fi = n the cap */
     for (uint32_t fi = 0; fi <= P->n; fi++) {
         uint32_t e = fi < P->n ? edge_of[fi] : WK_NONE, k = 0;
         for (uint32_t i = 0; i < A; i++)
@@ -54,36 +57,36 @@ wk_status wk_write_obj_capped(wk_run *R, FILE *f, const wk_polygon *P, const wk_
         if (e != WK_NONE) {
             /* from next(e) around to e: the input edge closes the face */
             uint32_t start = wk_polygon_next(P, e), cur = start, prev_arc = WK_NONE, guard = 0;
-            fprintf(f, "f %u %u", wk_polygon_output_node(P, e) + 1,
-                    wk_polygon_output_node(P, start) + 1);
+            PUSH_NODE(e);
+            PUSH_NODE(start);
             while (cur != e) {
                 uint32_t used;
                 uint32_t nx = step(S, arcs, k, cur, &used, prev_arc);
                 if (nx == WK_NONE || ++guard > k) {
                     st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
-                                 "write obj: the face of edge %u of this capped roof is not one "
-                                 "simple cycle (not written yet)",
-                                 wk_polygon_input_edge(P, e));
+                                 "%sthe face of edge %u of this capped roof is not one simple "
+                                 "cycle (not written yet)",
+                                 what, wk_polygon_input_edge(P, e));
                     goto out;
                 }
                 prev_arc = used;
                 cur = nx;
-                if (cur != e) fprintf(f, " %u", wk_polygon_output_node(P, cur) + 1);
+                if (cur != e) PUSH_NODE(cur);
             }
-            fputc('\n', f);
+            END_FACE();
             continue;
         }
         /* the cap: each arc a -> b has the cap on its left, so following
         ** a -> b -> ... goes counter-clockwise around it */
+        CF->n_edge_faces = CF->n_faces;
         for (uint32_t i = 0; i < k; i++) {
             if (done[i]) continue;
-            fputc('f', f);
             uint32_t j = i, guard = 0;
             while (!done[j]) {
                 done[j] = 1;
                 const wk_arc *c = &S->arcs[arcs[j]];
                 uint32_t from = c->left == WK_NONE ? c->a : c->b, to = c->left == WK_NONE ? c->b : c->a;
-                fprintf(f, " %u", wk_polygon_output_node(P, from) + 1);
+                PUSH_NODE(from);
                 uint32_t nj = WK_NONE;
                 for (uint32_t q = 0; q < k && nj == WK_NONE; q++) {
                     const wk_arc *d = &S->arcs[arcs[q]];
@@ -93,13 +96,50 @@ wk_status wk_write_obj_capped(wk_run *R, FILE *f, const wk_polygon *P, const wk_
                 if (nj == WK_NONE || ++guard > k) break;
                 j = nj;
             }
-            fputc('\n', f);
+            END_FACE();
         }
     }
-    st = wk_write_end(R, f, "obj");
+#undef PUSH_NODE
+#undef END_FACE
+    st = WK_OK;
 out:
     if (arcs) WK_FREE_ARRAY(R, arcs, A + 1);
     if (done) WK_FREE_ARRAY(R, done, A + 1);
+    if (st != WK_OK) wk_capped_faces_clear(R, CF);
+    return st;
+}
+
+void wk_capped_faces_clear(wk_run *R, wk_capped_faces *CF) {
+    WK_FREE_ARRAY(R, CF->node, CF->cap_node);
+    WK_FREE_ARRAY(R, CF->end, CF->cap_end);
+    memset(CF, 0, sizeof *CF);
+}
+
+wk_status wk_write_obj_capped(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
+    uint32_t *vertex_of = NULL, *edge_of = NULL;
+    wk_capped_faces CF;
+    if (wk_write_begin_capped(R, P, S, "write obj: ") != WK_OK ||
+        wk_input_order(R, P, &vertex_of, &edge_of) != WK_OK)
+        return R->err.code;
+    wk_status st = wk_capped_faces_build(R, P, S, edge_of, &CF, "write obj: ");
+    if (st == WK_OK) {
+        fputs("# wskel roof of ", f);
+        wk_write_name(f, P);
+        fprintf(f, ": %u vertices (x y t), one face per input edge, then the cap at the height\n",
+                S->n_nodes);
+        for (uint32_t i = 0; i < S->n_nodes; i++) {
+            const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
+            fprintf(f, "v %.17g %.17g %.17g\n", v->x, v->y, v->t);
+        }
+        for (uint32_t fi = 0; fi < CF.n_faces; fi++) {
+            fputc('f', f);
+            for (uint32_t k = fi ? CF.end[fi - 1] : 0; k < CF.end[fi]; k++)
+                fprintf(f, " %u", wk_polygon_output_node(P, CF.node[k]) + 1);
+            fputc('\n', f);
+        }
+        st = wk_write_end(R, f, "obj");
+        wk_capped_faces_clear(R, &CF);
+    }
     WK_FREE_ARRAY(R, vertex_of, P->n);
     WK_FREE_ARRAY(R, edge_of, P->n);
     return st;

@@ -189,6 +189,11 @@ class Deforming(unittest.TestCase):
         self.assertEqual({vs[i][2] for i in fs[4]}, {1})
         rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", "1",
                                "--format", "vtp", path])
+        self.assertEqual(rc, 0, err)
+        self.assertIn('NumberOfPolys="5"', out)
+        self.assertIn('NumberOfLines="12"', out)
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", "1",
+                               "--format", "svg", path])
         self.assertEqual(rc, 2)
         self.assertIn("not written in this format yet", err)
 
