@@ -123,6 +123,7 @@ test-asan: $(BA)/tests/run_tests $(BA)/wskel
 	WSKEL_BIN=$(BA)/wskel WSKEL_DEGENERATE_CASES=400 WSKEL_MONO_CASES=150 WSKEL_REAL_CASES=8 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(PY) tests/test_degenerate.py
 	WSKEL_BIN=$(BA)/wskel WSKEL_HOLES_CASES=60 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(PY) tests/test_holes.py
 	WSKEL_BIN=$(BA)/wskel WSKEL_MOTORCYCLE_MAX_N=256 WSKEL_MOTORCYCLE_SEEDS=2 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(PY) tests/test_motorcycle.py
+	WSKEL_BIN=$(BA)/wskel WSKEL_DEFORMING_MAX_N=16 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(PY) tests/test_deforming.py
 test-cli: all
 	bash tests/cli_tests.sh
 	bash tests/test_layering.sh
@@ -133,6 +134,7 @@ test-py: all python
 	$(PY) tests/test_degenerate.py
 	$(PY) tests/test_holes.py
 	$(PY) tests/test_motorcycle.py
+	WSKEL_DEFORMING_MAX_N=256 $(PY) tests/test_deforming.py
 	$(PY) tests/test_cgal_agreement.py
 	$(PY) tests/test_offset_cgal.py
 	$(PY) tests/test_scripts.py

@@ -13,6 +13,7 @@
 #include "wskel.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -55,6 +56,14 @@ static const char usage_text[] =
     "                     'lower' (default, the lower weight edge survives, as in\n"
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
     "  --threads N        OpenMP threads for variants that use them (default 1)\n"
+    "  --angles           the third column (GraphML: edge-weight) is the roof's\n"
+    "                     pitch in degrees (0..180), weight 1/tan(pitch): 90 a\n"
+    "                     wall (0), above 90 an overhang (< 0)\n"
+    "  --height H         stop at t = H and close the roof with a cap at t = H\n"
+    "                     (deforming; required when a weight is <= 0)\n"
+    "  --step S           variants that advance in time steps (deforming): the\n"
+    "                     first increment times S (default 1); the skeleton\n"
+    "                     does not depend on it\n"
     "  --verbose          on failure, also say where in wskel it was raised\n"
     "  --check-invariants after every group of events, check the wavefront's and\n"
     "                     the variant's invariants (slow: O(n) per group; tests)\n"
@@ -117,6 +126,9 @@ int main(int argc, char **argv) {
     wk_collinear_rule collinear = WK_COLLINEAR_LOWER;
     int threads = 1;
     uint32_t part = WK_NONE;
+    double step_scale = 1;
+    double height = 0;
+    bool angles = false;
 
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -206,6 +218,24 @@ int main(int argc, char **argv) {
             if (end == v || *end || x < 1 || x > 1024)
                 return usage_error("--threads must be an integer in 1..1024 (got '%s')", v);
             threads = (int)x;
+        } else if (!strcmp(a, "--angles")) {
+            angles = true;
+        } else if (!strcmp(a, "--height")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            char *end;
+            double x = strtod(v, &end);
+            if (end == v || *end || !(x > 0) || !isfinite(x))
+                return usage_error("--height must be a positive number (got '%s')", v);
+            height = x;
+        } else if (!strcmp(a, "--step")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            char *end;
+            double x = strtod(v, &end);
+            if (end == v || *end || !(x >= 1e-6 && x <= 1e6))
+                return usage_error("--step must be a number in [1e-6, 1e6] (got '%s')", v);
+            step_scale = x;
         } else if (a[0] == '-' && a[1] != '\0') {
             return usage_error("unknown option '%s'", a);
         } else {
@@ -238,6 +268,14 @@ int main(int argc, char **argv) {
     R.opt.k = k;
     R.opt.collinear = collinear;
     R.opt.threads = threads;
+    R.opt.step_scale = step_scale;
+    R.opt.height = height;
+    R.opt.angles = angles;
+    /* weights <= 0 are input only for a variant that takes them: the
+    ** readers refuse them otherwise, naming the edge */
+    R.opt.nonpositive_weights = (wk_variant_flags(V) & WK_VARIANT_NONPOSITIVE_WEIGHTS) != 0;
+    if (height > 0 && !R.opt.nonpositive_weights)
+        return usage_error("variant %s does not take --height (deforming does)", wk_variant_name(V));
     R.opt.check_invariants = check_invariants;
     R.opt.part = part;
 
@@ -254,6 +292,15 @@ int main(int argc, char **argv) {
         rc = report(&R, verbose);
         goto done;
     }
+    for (uint32_t i = 0; i < P->n && !(height > 0); i++)
+        if (!(P->w[i] > 0)) {
+            WK_FAIL(&R, WK_EINPUT, P->name, 0,
+                    "edge %u has weight %g <= 0: the wavefront need not vanish, so --height H "
+                    "(where the roof is cut) is required",
+                    wk_polygon_input_edge(P, i), P->w[i]);
+            rc = report(&R, verbose);
+            goto done;
+        }
     if (!(wk_variant_flags(V) & WK_VARIANT_WEIGHTS)) {
         for (uint32_t i = 0; i < P->n; i++)
             if (P->w[i] != 1.0) {

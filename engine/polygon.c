@@ -414,6 +414,12 @@ static wk_status report_intersection(wk_run *R, const sweep *S, const char *name
 
 /* ---- validation ---- */
 
+/* The variant to suggest for weights <= 0 (the registry says which). */
+static const char *nonpositive_variant(void) {
+    const char *v = wk_variant_with_flags(WK_VARIANT_NONPOSITIVE_WEIGHTS);
+    return v ? v : "(none registered)";
+}
+
 /* The checks that need no memory: finite and bounded coordinates, weights. */
 static wk_status check_values(wk_run *R, const wk_point *p, const double *w, uint32_t n,
                               const char *name, const long *lines) {
@@ -439,21 +445,26 @@ static wk_status check_values(wk_run *R, const wk_point *p, const double *w, uin
             if (!isfinite(w[i]))
                 return WK_FAIL(R, WK_EINPUT, name, line_of(lines, i),
                                "weight of edge %u is not a finite number (got %g)", i, w[i]);
-            if (!(w[i] > 0))
+            if (!(w[i] > 0) && !R->opt.nonpositive_weights)
                 return WK_FAIL(R, WK_EINPUT, name, line_of(lines, i),
-                               "weight of edge %u must be > 0 (got %g)", i, w[i]);
+                               "weight of edge %u must be > 0 (got %g); zero and negative "
+                               "weights need --variant %s (with --height H)",
+                               i, w[i], nonpositive_variant());
         }
     if (w) {
-        uint32_t lo = 0, hi = 0;
-        for (uint32_t i = 1; i < n; i++) {
-            if (w[i] < w[lo]) lo = i;
-            if (w[i] > w[hi]) hi = i;
+        /* the ratio of the positive weights (zero and negative ones, where
+        ** a variant takes them, are bounded by the same ratio in size) */
+        uint32_t lo = WK_NONE, hi = WK_NONE;
+        for (uint32_t i = 0; i < n; i++) {
+            if (w[i] == 0) continue;
+            if (lo == WK_NONE || fabs(w[i]) < fabs(w[lo])) lo = i;
+            if (hi == WK_NONE || fabs(w[i]) > fabs(w[hi])) hi = i;
         }
-        if (w[hi] > WK_POLYGON_MAX_WEIGHT_RATIO * w[lo])
+        if (lo != WK_NONE && fabs(w[hi]) > WK_POLYGON_MAX_WEIGHT_RATIO * fabs(w[lo]))
             return WK_FAIL(R, WK_EINPUT, name, line_of(lines, hi),
                            "weights of edge %u (%g) and edge %u (%g) differ by a factor of %.3g, "
                            "above the %g the wavefront resolves (input domain, see README)",
-                           hi, w[hi], lo, w[lo], w[hi] / w[lo], WK_POLYGON_MAX_WEIGHT_RATIO);
+                           hi, w[hi], lo, w[lo], fabs(w[hi] / w[lo]), WK_POLYGON_MAX_WEIGHT_RATIO);
     }
     return WK_OK;
 }

@@ -407,6 +407,9 @@ static wk_status parse_wpoly(wk_run *R, text *t, const char *name, wk_polygon **
                                  tok[i], tl[i] > 40 ? "..." : "");
                     goto done;
                 }
+            if (k == 3 && R->opt.angles &&
+                (st = wk_weight_of_angle(R, v[2], name, ln, &v[2])) != WK_OK)
+                goto done;
             /* total < nlines: every vertex has its own line */
             A.x[total] = v[0];
             A.y[total] = v[1];
@@ -870,7 +873,10 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
         G.dst[i] = end[1];
         int got = key_number(e, &kw, &G.ew[i], &where, bad, sizeof bad);
         if (got == 0) G.ew[i] = 1.0;
-        if (got < 0 || (got > 0 && !(G.ew[i] > 0))) {
+        if (got > 0 && R->opt.angles &&
+            (st = wk_weight_of_angle(R, G.ew[i], name, xmlGetLineNo(where), &G.ew[i])) != WK_OK)
+            goto done;
+        if (got < 0 || (got > 0 && !(G.ew[i] > 0) && !R->opt.nonpositive_weights)) {
             describe_element(e, "edge", i, d1, sizeof d1);
             if (got == -2)
                 st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
@@ -880,7 +886,12 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
                              "%s: edge-weight '%s' is not a finite number", d1, bad);
             else
                 st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(where),
-                             "weight of %s must be > 0 (got %g)", d1, G.ew[i]);
+                             "weight of %s must be > 0 (got %g); zero and negative weights "
+                             "need --variant %s (with --height H)",
+                             d1, G.ew[i],
+                             wk_variant_with_flags(WK_VARIANT_NONPOSITIVE_WEIGHTS)
+                                 ? wk_variant_with_flags(WK_VARIANT_NONPOSITIVE_WEIGHTS)
+                                 : "(none registered)");
             goto done;
         }
         double add = 0;
@@ -1094,6 +1105,15 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
 }
 
 /* ---- by content ---- */
+
+wk_status wk_weight_of_angle(wk_run *R, double degrees, const char *name, long line, double *w) {
+    if (!(degrees > 0 && degrees < 180))
+        return WK_FAIL(R, WK_EINPUT, name, line,
+                       "pitch %g degrees: --angles takes pitches strictly between 0 and 180", degrees);
+    /* 90 exactly is a wall: cos(pi / 2) in doubles is 6e-17, not 0 */
+    *w = degrees == 90 ? 0.0 : 1.0 / tan(degrees * (3.14159265358979323846 / 180.0));
+    return WK_OK;
+}
 
 wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out) {
     *out = NULL;

@@ -31,6 +31,7 @@ void (wk_run_init)(wk_run *R) {
     R->opt.threads = 1;
     R->opt.tol_scale = 1;
     R->opt.part = WK_NONE;
+    R->opt.step_scale = 1;
     R->err.code = WK_OK;
 }
 

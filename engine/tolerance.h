@@ -44,6 +44,13 @@
 ** again; 1e-9 leaves room for the error of a constructed event while staying
 ** 1000 times below the validator's default (WK_VALIDATE_TOL_REL). */
 #define WK_TOL_REL 1e-9
+/* A variant that steps a moving polygon (004): a vertex within WK_DEFORM_CONTACT_SLACK *
+** eps_d of an event point takes part in it, and a penetration counts when
+** the vertex meets the piece within that distance of the piece's ends (a
+** vertex-on-vertex contact).  16 as WK_REFINE_DIST_SLACK: the error of a
+** constructed event point (a few eps_d at worst) with room to spare, still
+** 60000 times below the validator's tolerance. */
+#define WK_DEFORM_CONTACT_SLACK 16.0
 /* eps_t = WK_TOL_TIME * eps_d / wmax.  Simultaneous means equal up to the
 ** rounding of a constructed time (~1e-15 relative); a window as wide as
 ** eps_d / wmax would merge events that happen in sequence, and fast

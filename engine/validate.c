@@ -784,6 +784,12 @@ static wk_status check_planar(wk_run *R, const wk_polygon *P, const wk_skeleton 
 
 wk_status wk_validate(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
                       wk_validate_report *rep) {
+    /* A separate path for weights <= 0 or a cut at a height: the properties
+    ** below (a tree inside P, face areas, planarity) need positive weights
+    ** and a vanished wavefront (validate_general.c). */
+    bool general = R->opt.height > 0;
+    for (uint32_t e = 0; e < P->n && !general; e++) general = !(P->w[e] > 0);
+    if (general) return wk_validate_general(R, P, S, tol, rep);
     wk_validate_report local;
     if (!rep) rep = &local;
     memset(rep, 0, sizeof *rep);

@@ -7,6 +7,8 @@
 **                                      input vertices in input order, t = 0
 **    "arcs":[[a,b,left,right], ...],  node ids; left/right: the input edges
 **                                      whose faces lie left/right of a -> b
+**                                      (-1: the cap of a skeleton cut at a
+**                                      height, --height)
 **    "stats":{COUNTER:count, ... (every name of WK_COUNTER_LIST),
 **             "time_s":seconds, "peak_bytes":bytes}}
 **
@@ -45,7 +47,7 @@ static void put_k(FILE *f, const wk_run_info *info) {
 wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
                         const wk_run_info *info) {
     uint32_t *vertex_of;
-    if (wk_write_begin(R, P, S, "write json: ") != WK_OK ||
+    if (wk_write_begin_capped(R, P, S, "write json: ") != WK_OK ||
         wk_input_order(R, P, &vertex_of, NULL) != WK_OK)
         return R->err.code;
 
@@ -70,9 +72,9 @@ wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skelet
     fputs("],\n\"arcs\":[\n", f);
     for (uint32_t i = 0; i < S->n_arcs; i++) {
         const wk_arc *c = &S->arcs[i];
-        fprintf(f, "[%u,%u,%u,%u]%s\n", wk_polygon_output_node(P, c->a),
-                wk_polygon_output_node(P, c->b), wk_polygon_input_edge(P, c->left),
-                wk_polygon_input_edge(P, c->right), i + 1 < S->n_arcs ? "," : "");
+        fprintf(f, "[%u,%u,%lld,%lld]%s\n", wk_polygon_output_node(P, c->a),
+                wk_polygon_output_node(P, c->b), wk_write_face(P, c->left),
+                wk_write_face(P, c->right), i + 1 < S->n_arcs ? "," : "");
     }
     fputs("],\n\"stats\":", f);
     if (!info) {

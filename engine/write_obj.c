@@ -10,6 +10,9 @@
 
 wk_status wk_write_obj(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
     uint32_t *vertex_of = NULL, *edge_of = NULL;
+    for (uint32_t i = 0; i < S->n_arcs; i++)
+        if (S->arcs[i].left == WK_NONE || S->arcs[i].right == WK_NONE)
+            return wk_write_obj_capped(R, f, P, S); /* a roof cut at a height */
     wk_faces F;
     if (wk_write_begin(R, P, S, "write obj: ") != WK_OK ||
         wk_faces_build(R, P, S, &F, "write obj: ") != WK_OK)

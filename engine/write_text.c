@@ -7,7 +7,7 @@
 **                    vertices in input order (t = 0); %.17g, round-trips
 **   arcs M
 **   a b left right   M lines: node ids, and the input edges whose faces lie
-**                    left and right of a -> b
+**                    left and right of a -> b (-1: the cap, --height)
 **
 ** Reading it back: skip lines starting with '#', then read "nodes", N, the
 ** N triples, "arcs", M and the M quadruples, all whitespace-separated.
@@ -16,7 +16,7 @@
 
 wk_status wk_write_text(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
     uint32_t *vertex_of;
-    if (wk_write_begin(R, P, S, "write text: ") != WK_OK ||
+    if (wk_write_begin_capped(R, P, S, "write text: ") != WK_OK ||
         wk_input_order(R, P, &vertex_of, NULL) != WK_OK)
         return R->err.code;
     fputs("# wskel skeleton (wskel-1 text), polygon ", f);
@@ -33,9 +33,9 @@ wk_status wk_write_text(wk_run *R, FILE *f, const wk_polygon *P, const wk_skelet
     fprintf(f, "arcs %u\n", S->n_arcs);
     for (uint32_t i = 0; i < S->n_arcs; i++) {
         const wk_arc *c = &S->arcs[i];
-        fprintf(f, "%u %u %u %u\n", wk_polygon_output_node(P, c->a),
-                wk_polygon_output_node(P, c->b), wk_polygon_input_edge(P, c->left),
-                wk_polygon_input_edge(P, c->right));
+        fprintf(f, "%u %u %lld %lld\n", wk_polygon_output_node(P, c->a),
+                wk_polygon_output_node(P, c->b), wk_write_face(P, c->left),
+                wk_write_face(P, c->right));
     }
     WK_FREE_ARRAY(R, vertex_of, P->n);
     return wk_write_end(R, f, "text");

@@ -220,6 +220,21 @@ typedef struct wk_options {
                                 holding several (GeoJSON MultiPolygon or
                                 features, WKT MULTIPOLYGON); WK_NONE (the
                                 default): refuse such an input, naming the count */
+    bool nonpositive_weights; /* the readers and wk_polygon_from_* accept
+                                weights <= 0 (set it only for a variant with
+                                WK_VARIANT_NONPOSITIVE_WEIGHTS) */
+    double height;           /* > 0: stop at t = height and close the roof
+                                with a cap (--height; required with weights
+                                <= 0, where the wavefront need not vanish);
+                                0: run until the wavefront vanishes */
+    bool angles;             /* the readers take the third column (GraphML:
+                                edge-weight) as the roof's pitch in degrees,
+                                w = 1 / tan(pitch): 90 a wall (0), above 90
+                                an overhang (< 0); --angles */
+    double step_scale;       /* variants that advance in time steps (004's
+                                predictor-corrector): the first increment
+                                times this (1; --step); the skeleton must
+                                not depend on it */
 } wk_options;
 
 /* ------------------------------------------------------------------ run */
@@ -424,6 +439,9 @@ wk_status wk_polygon_read_geojson(wk_run *R, const char *buf, size_t len, const 
                                   wk_polygon **out);
 wk_status wk_polygon_read_wkt(wk_run *R, const char *buf, size_t len, const char *name,
                               wk_polygon **out);
+/* The weight of a roof pitch of `degrees` (0 < degrees < 180; 90 gives
+** exactly 0): 1 / tan.  WK_EINPUT naming name and line otherwise. */
+wk_status wk_weight_of_angle(wk_run *R, double degrees, const char *name, long line, double *w);
 /* Write .wpoly (counter-clockwise, as stored). */
 wk_status wk_polygon_write_wpoly(wk_run *R, FILE *f, const wk_polygon *P);
 void wk_polygon_free(wk_run *R, wk_polygon *P);
@@ -503,6 +521,9 @@ static inline wk_seg_meet wk_segments_meet_counted(wk_run *R, wk_point a, wk_poi
 /* ------------------------------------------------------------- skeleton */
 
 typedef struct wk_node { double x, y, t; } wk_node;
+/* left/right: input edges (stored numbering).  Only a skeleton cut at a
+** height (wk_options.height) has arcs with WK_NONE on one side: the cap,
+** the wavefront at t = height, whose face is no edge's. */
 typedef struct wk_arc { uint32_t a, b, left, right; } wk_arc;
 
 typedef struct wk_skeleton {
@@ -549,6 +570,12 @@ typedef struct wk_validate_report {
 ** property in R->err.  rep may be NULL. */
 wk_status wk_validate(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
                       wk_validate_report *rep);
+/* The checks for weights of any sign and for a skeleton cut at a height
+** (engine/validate_general.c says what they prove and what they cannot with
+** overhangs); wk_validate takes this path by itself when R->opt.height > 0
+** or a weight is <= 0.  area_error is not computed (0). */
+wk_status wk_validate_general(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
+                              wk_validate_report *rep);
 
 /* -------------------------------------------------------------- writers */
 
@@ -648,10 +675,18 @@ wk_status wk_write_offsets_wkt(wk_run *R, FILE *f, wk_offset_set *const *O, uint
 ** may ask of one. */
 #define WK_VARIANT_WEIGHTS 1u /* handles non-unit weights */
 #define WK_VARIANT_USES_K 2u  /* the k option matters */
+/* takes weights <= 0 (zero: a stationary edge, a wall; negative: an edge
+** moving outward, an overhang) and --height (wk_options.height): the
+** readers accept such weights only when R->opt.nonpositive_weights says the
+** chosen variant has this flag */
+#define WK_VARIANT_NONPOSITIVE_WEIGHTS 4u
 const char *wk_variant_name(const wk_variant *V);
 const char *wk_variant_summary(const wk_variant *V);
 unsigned wk_variant_flags(const wk_variant *V); /* WK_VARIANT_* */
 
+/* The name of the first registered variant with all of `flags`, or NULL
+** (messages that suggest a variant without the engine naming one). */
+const char *wk_variant_with_flags(unsigned flags);
 /* NULL-terminated registry lookup; NULL if unknown. */
 const wk_variant *wk_variant_find(const char *name);
 /* i-th registered variant, NULL past the end. */

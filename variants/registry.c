@@ -12,12 +12,14 @@ extern const wk_variant wk_variant_naive;
 extern const wk_variant wk_variant_monotone;
 extern const wk_variant wk_variant_arrangement;
 extern const wk_variant wk_variant_motorcycle;
+extern const wk_variant wk_variant_deforming;
 
 static const wk_variant *const registry[] = {
     &wk_variant_naive,
     &wk_variant_monotone,
     &wk_variant_arrangement,
     &wk_variant_motorcycle,
+    &wk_variant_deforming,
     NULL,
 };
 

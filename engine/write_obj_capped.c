@@ -1,0 +1,146 @@
+/*
+** write_obj_capped.c: the faces of a roof cut at a height, and its OBJ.
+** The faces: of a skeleton cut at a height (arcs with
+** the cap, WK_NONE, on one side; wk_options.height): one face per input
+** edge (walls of weight 0 are vertical faces), in input edge order, then
+** one face per closed cycle of the cap, all counter-clockwise seen from
+** above.  A face is walked from its edge (e, next(e)) along its arcs; this
+** path handles faces whose every node has two of the face's arcs (no
+** islands, no node visited twice) and says so otherwise (WK_EUNSUPPORTED).
+*/
+#include "write.h"
+
+#include <string.h>
+
+/* The next node of face f after cur, arriving from prev: the other arc of
+** f at cur (its arcs listed in arcs[0..k)); WK_NONE if there are not
+** exactly two. */
+static uint32_t step(const wk_skeleton *S, const uint32_t *arcs, uint32_t k, uint32_t cur,
+                     uint32_t *used_arc, uint32_t prev_arc) {
+    uint32_t found = WK_NONE, count = 0;
+    for (uint32_t i = 0; i < k; i++) {
+        const wk_arc *c = &S->arcs[arcs[i]];
+        if (c->a != cur && c->b != cur) continue;
+        count++;
+        if (arcs[i] != prev_arc) found = arcs[i];
+    }
+    if (count != 2 && !(count == 1 && prev_arc == WK_NONE)) return WK_NONE;
+    if (found == WK_NONE) return WK_NONE;
+    *used_arc = found;
+    const wk_arc *c = &S->arcs[found];
+    return c->a == cur ? c->b : c->a;
+}
+
+wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                const uint32_t *edge_of, wk_capped_faces *CF, const char *what) {
+    memset(CF, 0, sizeof *CF);
+    uint32_t A = S->n_arcs;
+    uint32_t *arcs = WK_NEW_ARRAY(R, uint32_t, A + 1);
+    uint8_t *done = WK_NEW_ARRAY(R, uint8_t, A + 1);
+    wk_status st = R->err.code;
+    if (!arcs || !done) goto out;
+#define PUSH_NODE(v)                                                                   \
+    do {                                                                               \
+        if (WK_GROW(R, CF->node, CF->cap_node, CF->n_node + 1) != WK_OK) goto out;     \
+        CF->node[CF->n_node++] = (v);                                                  \
+    } while (0)
+#define END_FACE()                                                                       \
+    do {                                                                                 \
+        if (WK_GROW(R, CF->end, CF->cap_end, CF->n_faces + 1) != WK_OK) goto out;        \
+        CF->end[CF->n_faces++] = CF->n_node;                                             \
+    } while (0)
+    /* faces fi = 0 .. n-1 are the edges' (input order), fi = n the cap */
+    for (uint32_t fi = 0; fi <= P->n; fi++) {
+        uint32_t e = fi < P->n ? edge_of[fi] : WK_NONE, k = 0;
+        for (uint32_t i = 0; i < A; i++)
+            if (S->arcs[i].left == e || S->arcs[i].right == e) arcs[k++] = i;
+        if (e != WK_NONE) {
+            /* from next(e) around to e: the input edge closes the face */
+            uint32_t start = wk_polygon_next(P, e), cur = start, prev_arc = WK_NONE, guard = 0;
+            PUSH_NODE(e);
+            PUSH_NODE(start);
+            while (cur != e) {
+                uint32_t used;
+                uint32_t nx = step(S, arcs, k, cur, &used, prev_arc);
+                if (nx == WK_NONE || ++guard > k) {
+                    st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                                 "%sthe face of edge %u of this capped roof is not one simple "
+                                 "cycle (not written yet)",
+                                 what, wk_polygon_input_edge(P, e));
+                    goto out;
+                }
+                prev_arc = used;
+                cur = nx;
+                if (cur != e) PUSH_NODE(cur);
+            }
+            END_FACE();
+            continue;
+        }
+        /* the cap: each arc a -> b has the cap on its left, so following
+        ** a -> b -> ... goes counter-clockwise around it */
+        CF->n_edge_faces = CF->n_faces;
+        for (uint32_t i = 0; i < k; i++) {
+            if (done[i]) continue;
+            uint32_t j = i, guard = 0;
+            while (!done[j]) {
+                done[j] = 1;
+                const wk_arc *c = &S->arcs[arcs[j]];
+                uint32_t from = c->left == WK_NONE ? c->a : c->b, to = c->left == WK_NONE ? c->b : c->a;
+                PUSH_NODE(from);
+                uint32_t nj = WK_NONE;
+                for (uint32_t q = 0; q < k && nj == WK_NONE; q++) {
+                    const wk_arc *d = &S->arcs[arcs[q]];
+                    uint32_t dfrom = d->left == WK_NONE ? d->a : d->b;
+                    if (!done[q] && dfrom == to) nj = q;
+                }
+                if (nj == WK_NONE || ++guard > k) break;
+                j = nj;
+            }
+            END_FACE();
+        }
+    }
+#undef PUSH_NODE
+#undef END_FACE
+    st = WK_OK;
+out:
+    if (arcs) WK_FREE_ARRAY(R, arcs, A + 1);
+    if (done) WK_FREE_ARRAY(R, done, A + 1);
+    if (st != WK_OK) wk_capped_faces_clear(R, CF);
+    return st;
+}
+
+void wk_capped_faces_clear(wk_run *R, wk_capped_faces *CF) {
+    WK_FREE_ARRAY(R, CF->node, CF->cap_node);
+    WK_FREE_ARRAY(R, CF->end, CF->cap_end);
+    memset(CF, 0, sizeof *CF);
+}
+
+wk_status wk_write_obj_capped(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
+    uint32_t *vertex_of = NULL, *edge_of = NULL;
+    wk_capped_faces CF;
+    if (wk_write_begin_capped(R, P, S, "write obj: ") != WK_OK ||
+        wk_input_order(R, P, &vertex_of, &edge_of) != WK_OK)
+        return R->err.code;
+    wk_status st = wk_capped_faces_build(R, P, S, edge_of, &CF, "write obj: ");
+    if (st == WK_OK) {
+        fputs("# wskel roof of ", f);
+        wk_write_name(f, P);
+        fprintf(f, ": %u vertices (x y t), one face per input edge, then the cap at the height\n",
+                S->n_nodes);
+        for (uint32_t i = 0; i < S->n_nodes; i++) {
+            const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
+            fprintf(f, "v %.17g %.17g %.17g\n", v->x, v->y, v->t);
+        }
+        for (uint32_t fi = 0; fi < CF.n_faces; fi++) {
+            fputc('f', f);
+            for (uint32_t k = fi ? CF.end[fi - 1] : 0; k < CF.end[fi]; k++)
+                fprintf(f, " %u", wk_polygon_output_node(P, CF.node[k]) + 1);
+            fputc('\n', f);
+        }
+        st = wk_write_end(R, f, "obj");
+        wk_capped_faces_clear(R, &CF);
+    }
+    WK_FREE_ARRAY(R, vertex_of, P->n);
+    WK_FREE_ARRAY(R, edge_of, P->n);
+    return st;
+}

@@ -1,0 +1,326 @@
+#!/usr/bin/python3
+"""test_deforming.py: the deforming-polygon variant (paper 004) against naive.
+
+Every generator family (bin/wskel-gen --list, holes and coastline included),
+n from 16 to WSKEL_DEFORMING_MAX_N (default 1,000; the full sweep of the
+issue sets 2,000), unit and random (uniform 0.5..2, integer 1..4) weights,
+WSKEL_DEFORMING_SEEDS seeds: bin/wskel --variant deforming --check must pass
+and give naive's skeleton (testlib.same_skeleton).  An input the variant
+hands to the reference (reference_fallbacks) is counted as not compared, and
+the sweep fails if more than one in 20 is.  The step: the skeleton must not
+depend on the predictor's increment, so the first increment halved and
+doubled (--step 0.5, --step 2), and made 1000 times smaller and larger, must
+give the same skeleton, and the small one must take more steps (so the
+option reached the variant; a large first increment is cut back to the
+event spacing at the first event, so its count may not change).
+"""
+
+import os
+import random
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import testlib as tl  # noqa: E402
+
+MAX_N = int(os.environ.get("WSKEL_DEFORMING_MAX_N", "1000"))
+SEEDS = int(os.environ.get("WSKEL_DEFORMING_SEEDS", "1"))
+NS = [n for n in (16, 64, 256, 1000, 2000) if n <= MAX_N]
+WEIGHTS = ("unit", "uniform", "int")
+
+
+def families():
+    rc, out, _ = tl.run([tl.WSKEL_GEN, "--list"])
+    assert rc == 0
+    return [line.split()[0] for line in out.splitlines() if line.strip()]
+
+
+def stat(got, name):
+    return int((got.get("stats") or {}).get(name, 0) or 0)
+
+
+class Deforming(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        tl.need(tl.WSKEL)
+        tl.need(tl.WSKEL_GEN)
+        cls.tmp = tempfile.mkdtemp(prefix="wskel-deforming-")
+
+    def gen(self, fam, n, seed, weights, extra=()):
+        path = os.path.join(self.tmp, "%s-%d-%d-%s.wpoly" % (fam, n, seed, weights))
+        rc, _, _ = tl.run([tl.WSKEL_GEN, fam, "--n", str(n), "--seed", str(seed),
+                           "--weights", weights, "-o", path] + list(extra))
+        return path if rc == 0 else None
+
+    def deforming(self, path, *extra):
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--check", "--stats"]
+                              + list(extra) + [path])
+        return rc, (tl.json.loads(out) if rc == 0 else None), err
+
+    def compare(self, t, name, path, weighted):
+        rc, out_n, err_n = tl.run([tl.WSKEL, "--check", path])
+        if rc != 0:
+            t.case(["%s: naive exit %s: %s" % (name, rc, err_n.strip()[:200])], path)
+            return
+        rc, got, err = self.deforming(path)
+        if rc != 0:
+            t.case(["%s: deforming exit %s: %s" % (name, rc, err.strip()[:200])], path)
+            return
+        if stat(got, "reference_fallbacks"):
+            t.skip(name, "handed to the reference variant (not compared)")
+            return
+        ref = tl.json.loads(out_n)
+        # times err by position errors over the weight: weights go down to 0.5
+        ok, why = tl.same_skeleton(ref, got) if not weighted else self.same_weighted(ref, got)
+        t.case([] if ok else ["%s: differs from naive: %s" % (name, why[:200])], path)
+
+    @staticmethod
+    def same_weighted(a, b):
+        ok, why = tl.same_skeleton(a, b)
+        if ok:
+            return ok, why
+        xs = [p[0] for p in a["nodes"][:a["n"]]]
+        ys = [p[1] for p in a["nodes"][:a["n"]]]
+        tol = 1e-7 * tl.math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+        return tl.same_skeleton(a, b, tol=tol, tol_t=2 * tol)
+
+    def test_families(self):
+        t = tl.Tally("deforming vs naive, every family")
+        for fam in families():
+            for n in NS:
+                for w in WEIGHTS:
+                    for seed in range(1, SEEDS + 1):
+                        extra = ["--holes", str(max(1, n // 60))] if fam == "holes" else []
+                        path = self.gen(fam, n, seed, w, extra)
+                        if path is None:
+                            t.skip("%s n=%d" % (fam, n), "impossible parameters")
+                            continue
+                        self.compare(t, "%s n=%d %s seed %d" % (fam, n, w, seed), path, w != "unit")
+        t.report(self, list_skipped=["handed to the reference variant (not compared)"])
+        fallbacks = len(t.skipped.get("handed to the reference variant (not compared)", []))
+        self.assertGreaterEqual(t.cases, len(NS) * SEEDS * len(WEIGHTS) * 8, t.summary())
+        self.assertLessEqual(20 * fallbacks, t.cases + fallbacks, t.summary())
+
+    def test_step_does_not_matter(self):
+        t = tl.Tally("deforming: --step 0.5 and 2 against 1")
+        for fam, n, w in (("star", 200, "unit"), ("random", 200, "uniform"), ("comb", 120, "int"),
+                          ("rectilinear", 120, "unit"), ("holes", 150, "unit"),
+                          ("coastline", 200, "uniform"), ("crossing", 100, "unit")):
+            extra = ["--holes", "3"] if fam == "holes" else []
+            path = self.gen(fam, n, 1, w, extra)
+            self.assertIsNotNone(path)
+            rc, base, err = self.deforming(path)
+            self.assertEqual(rc, 0, err)
+            for step in ("0.5", "2", "0.001", "1000"):
+                rc, got, err = self.deforming(path, "--step", step)
+                name = "%s n=%d %s --step %s" % (fam, n, w, step)
+                if rc != 0:
+                    t.case(["%s: exit %s: %s" % (name, rc, err.strip()[:200])], path)
+                    continue
+                fails = []
+                if stat(got, "reference_fallbacks") != stat(base, "reference_fallbacks"):
+                    fails.append("%s: a reference fallback with one step only" % name)
+                if stat(got, "steps") == stat(base, "steps") and step == "0.001":
+                    fails.append("%s: the same number of steps (%d): --step had no effect"
+                                 % (name, stat(got, "steps")))
+                ok, why = self.same_weighted(base, got)
+                if not ok:
+                    fails.append("%s: differs from --step 1: %s" % (name, why[:200]))
+                t.case(fails, path)
+        t.report(self)
+        self.assertEqual(t.cases, 7 * 4)
+
+    # ------------------------------------------- zero and negative weights
+
+    def roof(self, pts, ws, height, *extra):
+        path = tl.write_wpoly(os.path.join(self.tmp, "roof.wpoly"), pts, ws)
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--check", "--height",
+                               repr(height)] + list(extra) + [path])
+        self.assertEqual(rc, 0, err)
+        return tl.json.loads(out)
+
+    @staticmethod
+    def arc_set(sk):
+        nodes = sk["nodes"]
+        out = set()
+        for a, b, l, r in sk["arcs"]:
+            pa = tuple(round(c, 9) for c in nodes[a])
+            pb = tuple(round(c, 9) for c in nodes[b])
+            out.add((min(pa, pb), max(pa, pb), frozenset((l, r))))
+        return out
+
+    def test_gable_roof(self):
+        # a 10 x 4 rectangle whose short sides (edges 1 and 3) stand still: a
+        # gable roof, ridge at y = 2 and height 2 from x = 0 to x = 10, the
+        # gables vertical triangles
+        sk = self.roof([(0, 0), (10, 0), (10, 4), (0, 4)], [1, 0, 1, 0], 5)
+        want = {((0, 0, 0), (0, 2, 2), frozenset((3, 0))),
+                ((10, 0, 0), (10, 2, 2), frozenset((0, 1))),
+                ((10, 2, 2), (10, 4, 0), frozenset((1, 2))),
+                ((0, 2, 2), (0, 4, 0), frozenset((2, 3))),
+                ((0, 2, 2), (10, 2, 2), frozenset((0, 2)))}
+        self.assertEqual(self.arc_set(sk), want)
+
+    def test_gable_roof_cut_below_the_ridge(self):
+        # the same cut at H = 1: the wavefront at t = 1 is the cap, faces -1
+        sk = self.roof([(0, 0), (10, 0), (10, 4), (0, 4)], [1, 0, 1, 0], 1)
+        caps = [a for a in sk["arcs"] if -1 in a[2:]]
+        self.assertEqual(len(caps), 4)
+        for a, b, l, r in caps:
+            self.assertEqual(sk["nodes"][a][2], 1)
+            self.assertEqual(sk["nodes"][b][2], 1)
+        ys = sorted({round(sk["nodes"][a][1], 9) for a, b, l, r in caps})
+        self.assertEqual(ys, [1, 3])
+
+    def test_obj_roof_with_walls_and_cap(self):
+        # the gable cut at H = 1 as OBJ: four faces (two of them vertical
+        # walls on x = 0 and x = 10) and the cap at z = 1
+        path = tl.write_wpoly(os.path.join(self.tmp, "gable.wpoly"),
+                              [(0, 0), (10, 0), (10, 4), (0, 4)], [1, 0, 1, 0])
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", "1",
+                               "--format", "obj", path])
+        self.assertEqual(rc, 0, err)
+        vs = [tuple(map(float, l.split()[1:])) for l in out.splitlines() if l.startswith("v ")]
+        fs = [[int(x) - 1 for x in l.split()[1:]] for l in out.splitlines() if l.startswith("f ")]
+        self.assertEqual(len(fs), 5)
+        for wall, x in ((fs[1], 10), (fs[3], 0)):
+            self.assertEqual({vs[i][0] for i in wall}, {x})
+        self.assertEqual({vs[i][2] for i in fs[4]}, {1})
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", "1",
+                               "--format", "vtp", path])
+        self.assertEqual(rc, 0, err)
+        self.assertIn('NumberOfPolys="5"', out)
+        self.assertIn('NumberOfLines="12"', out)
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", "1",
+                               "--format", "svg", path])
+        self.assertEqual(rc, 2)
+        self.assertIn("not written in this format yet", err)
+
+    def test_square_with_one_outward_edge(self):
+        # a 4 x 4 square whose bottom edge moves outward at speed 1: at t = 2
+        # the left and right edges meet along x = 2 from y = -2 to y = 2
+        sk = self.roof([(0, 0), (4, 0), (4, 4), (0, 4)], [-1, 1, 1, 1], 3)
+        want = {((0, 0, 0), (2, -2, 2), frozenset((3, 0))),
+                ((2, -2, 2), (4, 0, 0), frozenset((0, 1))),
+                ((2, 2, 2), (4, 4, 0), frozenset((1, 2))),
+                ((0, 4, 0), (2, 2, 2), frozenset((2, 3))),
+                ((2, -2, 2), (2, 2, 2), frozenset((1, 3)))}
+        self.assertEqual(self.arc_set(sk), want)
+
+    def test_convex_lower_envelope(self):
+        # a convex polygon with positive weights: the roof is the lower
+        # envelope of the edge planes t = d_e(x) / w_e, cut at H; every node
+        # lies on it (t = min(H, min_e d_e / w_e))
+        checked = 0
+        for n, seed in ((12, 1), (40, 2), (100, 3)):
+            path = self.gen("convex", n, seed, "uniform")
+            pts, ws = tl.read_wpoly(path)
+            full = self.deforming(path)[1]
+            tmax = max(v[2] for v in full["nodes"])
+            H = 0.6 * tmax
+            rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", repr(H), path])
+            self.assertEqual(rc, 0, err)
+            sk = tl.json.loads(out)
+            m = len(pts)
+            for x, y, t in sk["nodes"][m:]:
+                env = min(((pts[(e + 1) % m][0] - pts[e][0]) * (y - pts[e][1])
+                           - (pts[(e + 1) % m][1] - pts[e][1]) * (x - pts[e][0]))
+                          / tl.math.hypot(pts[(e + 1) % m][0] - pts[e][0],
+                                          pts[(e + 1) % m][1] - pts[e][1]) / ws[e]
+                          for e in range(m))
+                self.assertAlmostEqual(t, min(H, env), delta=1e-6 * tmax)
+                checked += 1
+        self.assertGreater(checked, 50)
+
+    def test_mixed_weights_every_family(self):
+        # every family with 15% walls (w = 0) and 10% outward edges (w = -0.5),
+        # cut at 5% of the size: the skeleton passes the general validator
+        # (--check), or the variant says it cannot (two parts of the wavefront
+        # meeting across the swept region), exit 2: never exit 3
+        rng = random.Random(1)
+        t = tl.Tally("deforming, zero and negative weights, every family")
+        refused = 0
+        for fam in families():
+            for n in (16, 64):
+                extra = ["--holes", "2"] if fam == "holes" else []
+                path = self.gen(fam, n, 1, "unit", extra)
+                if path is None:
+                    continue
+                with open(path) as fh:
+                    text = fh.read().splitlines()
+                out = []
+                for line in text:
+                    f = line.split()
+                    if len(f) >= 2 and not line.startswith("#"):
+                        r = rng.random()
+                        out.append("%s %s %s" % (f[0], f[1], "0" if r < 0.15 else
+                                                 "-0.5" if r < 0.25 else "1"))
+                    else:
+                        out.append(line)
+                with open(path, "w") as fh:
+                    fh.write("\n".join(out) + "\n")
+                pts = [tuple(map(float, l.split()[:2])) for l in out
+                       if len(l.split()) >= 2 and not l.startswith("#")]
+                size = max(max(p[0] for p in pts) - min(p[0] for p in pts),
+                           max(p[1] for p in pts) - min(p[1] for p in pts))
+                rc, _, err = tl.run([tl.WSKEL, "--variant", "deforming", "--check", "--height",
+                                     repr(0.05 * size), path])
+                name = "%s n=%d" % (fam, n)
+                if rc == 2 and "meets itself from outside" in err:
+                    refused += 1
+                    t.skip(name, "refused: the wavefront meets itself from outside")
+                    continue
+                t.case([] if rc == 0 else ["%s: exit %s: %s" % (name, rc, err.strip()[:200])],
+                       path)
+        t.report(self)
+        self.assertGreaterEqual(t.passed, 10, t.summary())
+
+    def test_nonpositive_weights_need_the_variant_and_a_height(self):
+        path = tl.write_wpoly(os.path.join(self.tmp, "gable.wpoly"),
+                              [(0, 0), (10, 0), (10, 4), (0, 4)], [1, 0, 1, 0])
+        for v in ("naive", "monotone", "arrangement", "motorcycle"):
+            rc, out, err = tl.run([tl.WSKEL, "--variant", v, path])
+            self.assertEqual(rc, 1, err)
+            self.assertIn("weight of edge 1 must be > 0 (got 0)", err)
+            self.assertIn("--variant deforming", err)
+            self.assertEqual(out, "")
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", path])
+        self.assertEqual(rc, 1, err)
+        self.assertIn("edge 1 has weight 0", err)
+        self.assertIn("--height", err)
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "naive", "--height", "1", path])
+        self.assertEqual(rc, 64, err)
+
+    def test_angles_and_option_errors(self):
+        # pitches 45 and 90 degrees are the gable roof of weights 1 and 0
+        path = os.path.join(self.tmp, "pitch.wpoly")
+        with open(path, "w") as fh:
+            fh.write("4\n0 0 45\n10 0 90\n10 4 45\n0 4 90\n")
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--angles", "--height", "5",
+                               path])
+        self.assertEqual(rc, 0, err)
+        got = tl.json.loads(out)
+        self.assertIn([4, 5, 0, 2], got["arcs"] + [[b, a, r, l] for a, b, l, r in got["arcs"]])
+        ridge = sorted(got["nodes"][4:])
+        self.assertEqual([[round(c, 9) for c in v] for v in ridge], [[0, 2, 2], [10, 2, 2]])
+        with open(path, "w") as fh:
+            fh.write("4\n0 0 45\n10 0 180\n10 4 45\n0 4 90\n")
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--angles", "--height", "5",
+                               path])
+        self.assertEqual(rc, 1, err)
+        self.assertIn(":3: pitch 180 degrees", err)
+        for bad in (["--height", "-1"], ["--height", "x"], ["--step", "0"]):
+            rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming"] + bad + [path])
+            self.assertEqual(rc, 64, (bad, err))
+
+    def test_weighted_rectangle_is_answered_by_the_variant(self):
+        path = os.path.join(self.tmp, "rect.wpoly")
+        tl.write_wpoly(path, [(0, 0), (4, 0), (4, 2), (0, 2)], [1, 0.5, 1, 2])
+        rc, got, err = self.deforming(path)
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(stat(got, "reference_fallbacks"), 0)
+
+
+if __name__ == "__main__":
+    unittest.main()
