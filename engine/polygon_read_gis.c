@@ -23,7 +23,9 @@
 ** the JSON path (features[2].geometry.coordinates[0][3]); jansson keeps no
 ** positions for values, so only syntax errors carry a line (jansson's).
 **
-** WKT (a small reader, so that every message has its line): any number of
+** WKT (a small reader, not GEOS: GEOS 3.11, Debian 12's, reads POLYGON M
+** as Z, losing the weights, and its parse errors name no position; this one
+** names the line of every message): any number of
 ** POLYGON and MULTIPOLYGON geometries, keywords in any case, an optional
 ** dimension Z, M or ZM, each optionally after PostGIS's EWKT "SRID=n;"
 ** (ignored); points of 2, 3 (Z or M as tagged; untagged: Z) or
