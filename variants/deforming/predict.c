@@ -335,7 +335,7 @@ wk_status df_predict(df_state *D, double *t_event) {
     for (uint32_t k = 0; k < D->n_ev; k++)
         if (D->ev[k].t <= te + D->eps_t) D->ev[kept++] = D->ev[k];
     D->n_ev = kept;
-    qsort(D->ev, D->n_ev, sizeof *D->ev, event_cmp_void);
+    if (D->n_ev > 1) qsort(D->ev, D->n_ev, sizeof *D->ev, event_cmp_void);
     *t_event = te;
     return WK_OK;
 }

@@ -206,7 +206,7 @@ static wk_status cut_piece(df_state *D, uint32_t a, double te) {
         S->cuts[n++] = (df_cut){s, 1, k};
     }
     if (n == 0) return WK_OK;
-    qsort(S->cuts, n, sizeof *S->cuts, cut_cmp);
+    if (n > 1) qsort(S->cuts, n, sizeof *S->cuts, cut_cmp);
     /* the same point twice in a row is one cut */
     uint32_t m = 1;
     for (uint32_t i = 1; i < n; i++)
@@ -381,7 +381,7 @@ static wk_status resolve(df_state *D, double te) {
         if (cut_piece(D, S->pieces[i], te) != WK_OK) return R->err.code;
     /* 3. pairing; ray ids change with the sort, so far_ray is mapped */
     for (uint32_t i = 0; i < S->n_r; i++) S->rays[i].newv = i; /* old id, for now */
-    qsort(S->rays, S->n_r, sizeof *S->rays, ray_cmp);
+    if (S->n_r > 1) qsort(S->rays, S->n_r, sizeof *S->rays, ray_cmp); /* rays may be NULL when empty */
     if (WK_GROW(R, S->cuts, S->cap_cuts, S->n_r / 2 + 1) != WK_OK) return R->err.code;
     uint32_t *where = WK_NEW_ARRAY(R, uint32_t, S->n_r + 1);
     if (!where) return R->err.code;
