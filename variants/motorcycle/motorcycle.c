@@ -462,7 +462,7 @@ static wk_status build_trace_grid(mc_state *A, const wk_wavefront *W) {
         hi.x = fmax(hi.x, fmax(S->o.x, e.x));
         hi.y = fmax(hi.y, fmax(S->o.y, e.y));
     }
-    A->tg_pad = 2.0 * wk_wf_eps_d(W);
+    A->tg_pad = WK_TRACE_GRID_PAD * wk_wf_eps_d(W);
     if (mc_tg_build(A->R, &A->tg, lo, hi, A->n_s, 2.0 * A->tg_pad) != WK_OK) return WK_ENOMEM;
     for (uint32_t j = 0; j < A->n_s; j++)
         if (index_part(A, j, 0, A->s[j].len) != WK_OK) return WK_ENOMEM;

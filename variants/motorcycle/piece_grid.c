@@ -6,7 +6,8 @@
 ** every current piece (a alive, b = next(a)) has an entry (a, b) of build
 ** G->gen in every cell its position at t comes within margin of (it was
 ** listed at the build, or after the group that made it current, with a hull
-** over [then, t_e]); cells of another gen hold no entries.
+** over [then, t_e]), or is on the overflow list; cells of another gen hold
+** no entries.
 */
 #include "piece_grid.h"
 
@@ -20,10 +21,11 @@
 ** times time): longer windows mean fewer builds but wider hulls.  Not a
 ** tolerance: a cost trade-off, measured on coastline 10^5 (README). */
 #define PG_WINDOW_CELLS 1.0
-/* How long after its computed collapse a piece is still listed, in eps_t:
-** the engine's edge event time is computed from the offset lines, not
-** from these positions, and may come a few eps_t later. */
-#define PG_COLLAPSE_SLACK 64.0
+/* A piece whose hull covers more cells than this (plus 4 per cell of its
+** length) is tested at every grid shot instead of listed.  Not a
+** tolerance: a cost bound (an O(n) hull per piece made builds quadratic on
+** nearly straight reflex corners, whose vertices are very fast). */
+#define PG_OVERFLOW_CELLS 64.0
 /* A build's cost estimate before any build: entries per input vertex. */
 #define PG_FIRST_EST 4u
 
@@ -35,6 +37,7 @@ void mc_pg_clear(wk_run *R, mc_piece_grid *G) {
         for (size_t c = 0; c < nc; c++) WK_FREE_ARRAY(R, G->cells[c].e, G->cells[c].cap);
         WK_FREE_ARRAY(R, G->cells, nc);
     }
+    WK_FREE_ARRAY(R, G->over, G->cap_over);
     mc_pg_init(G);
 }
 
@@ -62,7 +65,7 @@ static wk_status grid_alloc(wk_run *R, mc_piece_grid *G, const wk_wavefront *W) 
         hi.x = fmax(hi.x, p.x);
         hi.y = fmax(hi.y, p.y);
     }
-    G->margin = 8.0 * wk_wf_eps_d(W);
+    G->margin = WK_PIECE_GRID_MARGIN * wk_wf_eps_d(W);
     double m = G->margin, Wd = hi.x - lo.x + 4.0 * m, Hd = hi.y - lo.y + 4.0 * m;
     double target = P->n < 4 ? 4.0 : (double)P->n;
     double cell = sqrt(Wd * Hd / target);
@@ -81,6 +84,15 @@ static wk_status grid_alloc(wk_run *R, mc_piece_grid *G, const wk_wavefront *W) 
     G->cells = WK_NEW_ARRAY(R, mc_pg_cell, (size_t)G->nx * G->ny);
     if (!G->cells) return WK_ENOMEM;
     for (size_t c = 0; c < (size_t)G->nx * G->ny; c++) G->cells[c] = (mc_pg_cell){NULL, 0, 0, 0};
+    return WK_OK;
+}
+
+static wk_status push_overflow(wk_run *R, mc_piece_grid *G, uint32_t a, uint32_t b) {
+    if (WK_GROW(R, G->over, G->cap_over, 2 * G->n_over + 2) != WK_OK) return WK_ENOMEM;
+    G->over[2 * G->n_over] = a;
+    G->over[2 * G->n_over + 1] = b;
+    G->n_over++;
+    G->listed++;
     return WK_OK;
 }
 
@@ -103,7 +115,8 @@ static wk_status push(wk_run *R, mc_piece_grid *G, uint32_t c, uint32_t a, uint3
 ** that moment (the edge event ends it), so its hull stops there, a few
 ** eps_t later for the engine's rounding of the event time.  Without this
 ** cap every short piece made by a group would be listed up to the end of
-** the window (measured: 9 times the entries of the build). */
+** the window (measured on coastline 10^5: 9 times the entries of the
+** build).  The slack: tolerance.h. */
 static double collapse_time(const wk_wavefront *W, uint32_t a, uint32_t b, double t0) {
     wk_point pa = wk_wf_position(W, a, t0), pb = wk_wf_position(W, b, t0);
     wk_point va = wk_wf_velocity(W, a), vb = wk_wf_velocity(W, b);
@@ -111,11 +124,44 @@ static double collapse_time(const wk_wavefront *W, uint32_t a, uint32_t b, doubl
     double s = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
     double rate = (vb.x - va.x) * L->ux + (vb.y - va.y) * L->uy;
     if (!(rate < 0)) return INFINITY;
-    return t0 + (s > 0 ? s : 0) / -rate + PG_COLLAPSE_SLACK * wk_wf_eps_t(W);
+    return t0 + (s > 0 ? s : 0) / -rate + WK_PIECE_GRID_COLLAPSE_SLACK * wk_wf_eps_t(W);
+}
+
+/* Columns [*c0, *c1] of row r that the hull of p[0..3] (widened by
+** margin) meets; false if none. */
+static bool row_span(const mc_piece_grid *G, const wk_point *p, uint32_t r, uint32_t *c0,
+                     uint32_t *c1) {
+    double m = G->margin;
+    double s0 = G->y0 + (double)r * G->ch - m, s1 = G->y0 + (double)(r + 1) * G->ch + m;
+    double xlo = INFINITY, xhi = -INFINITY;
+    for (int i = 0; i < 4; i++)
+        for (int j = i; j < 4; j++) {
+            wk_point P = p[i], Q = p[j];
+            double lo = fmax(s0, fmin(P.y, Q.y)), hi = fmin(s1, fmax(P.y, Q.y));
+            if (lo > hi) continue;
+            double x0, x1;
+            if (P.y == Q.y) {
+                x0 = P.x;
+                x1 = Q.x;
+            } else {
+                double k = (Q.x - P.x) / (Q.y - P.y);
+                x0 = P.x + (lo - P.y) * k;
+                x1 = P.x + (hi - P.y) * k;
+            }
+            xlo = fmin(xlo, fmin(x0, x1));
+            xhi = fmax(xhi, fmax(x0, x1));
+        }
+    if (!(xlo <= xhi)) return false;
+    *c0 = col_of(G, xlo - m);
+    *c1 = col_of(G, xhi + m);
+    return true;
 }
 
 /* List piece a -> b in every cell its hull over [t0, min(t_e, collapse)]
-** meets (widened by margin). */
+** meets (widened by margin); a piece whose hull would cover more than
+** PG_OVERFLOW_CELLS plus 4 cells per cell of its length (a vertex of very
+** high speed: nearly straight reflex corners) goes on the overflow list
+** instead, which every grid shot tests. */
 static wk_status list_piece(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, uint32_t a,
                             uint32_t b, double t0) {
     double t1 = fmin(G->t_e, collapse_time(W, a, b, t0));
@@ -124,33 +170,20 @@ static wk_status list_piece(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, 
                      wk_wf_position(W, a, t1), wk_wf_position(W, b, t1)};
     double m = G->margin, ylo = INFINITY, yhi = -INFINITY;
     for (int k = 0; k < 4; k++) {
+        if (!isfinite(p[k].x) || !isfinite(p[k].y)) return push_overflow(R, G, a, b);
         ylo = fmin(ylo, p[k].y);
         yhi = fmax(yhi, p[k].y);
     }
-    if (!(ylo <= yhi)) return WK_OK; /* defensive: NaN positions list nothing */
-    uint32_t r0 = row_of(G, ylo - m), r1 = row_of(G, yhi + m);
+    double len = fmax(hypot(p[1].x - p[0].x, p[1].y - p[0].y),
+                      hypot(p[3].x - p[2].x, p[3].y - p[2].y));
+    double cap = PG_OVERFLOW_CELLS + 4.0 * len / fmin(G->cw, G->ch);
+    uint32_t r0 = row_of(G, ylo - m), r1 = row_of(G, yhi + m), c0, c1;
+    double cells = 0;
+    for (uint32_t r = r0; r <= r1 && cells <= cap; r++)
+        if (row_span(G, p, r, &c0, &c1)) cells += (double)(c1 - c0 + 1);
+    if (cells > cap) return push_overflow(R, G, a, b);
     for (uint32_t r = r0; r <= r1; r++) {
-        double s0 = G->y0 + (double)r * G->ch - m, s1 = G->y0 + (double)(r + 1) * G->ch + m;
-        double xlo = INFINITY, xhi = -INFINITY;
-        for (int i = 0; i < 4; i++)
-            for (int j = i; j < 4; j++) {
-                wk_point P = p[i], Q = p[j];
-                double lo = fmax(s0, fmin(P.y, Q.y)), hi = fmin(s1, fmax(P.y, Q.y));
-                if (lo > hi) continue;
-                double x0, x1;
-                if (P.y == Q.y) {
-                    x0 = P.x;
-                    x1 = Q.x;
-                } else {
-                    double k = (Q.x - P.x) / (Q.y - P.y);
-                    x0 = P.x + (lo - P.y) * k;
-                    x1 = P.x + (hi - P.y) * k;
-                }
-                xlo = fmin(xlo, fmin(x0, x1));
-                xhi = fmax(xhi, fmax(x0, x1));
-            }
-        if (!(xlo <= xhi)) continue;
-        uint32_t c0 = col_of(G, xlo - m), c1 = col_of(G, xhi + m);
+        if (!row_span(G, p, r, &c0, &c1)) continue;
         for (uint32_t c = c0; c <= c1; c++)
             if (push(R, G, r * G->nx + c, a, b) != WK_OK) return WK_ENOMEM;
     }
@@ -165,6 +198,7 @@ static wk_status build(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, doubl
     G->t_b = t;
     G->t_e = t + G->window;
     G->listed = 0;
+    G->n_over = 0;
     for (uint32_t a = 0; a < wk_wf_vertex_count(W); a++)
         if (wk_wf_alive(W, a) && list_piece(R, G, W, a, wk_wf_next(W, a), t) != WK_OK)
             return WK_ENOMEM;
@@ -247,6 +281,24 @@ static hit walk_cycle(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, wk_poi
     return best;
 }
 
+/* Offer the current pieces of entries e[0 .. *n) (pairs a, b); stale ones
+** (not current for good: ids are never reused) are dropped. */
+static void scan_entries(const wk_wavefront *W, uint32_t *e, uint32_t *n, wk_point o, wk_point u,
+                         uint32_t v, double t, double lambda0, hit *best, uint64_t *k) {
+    for (uint32_t i = 0; i < *n;) {
+        uint32_t a = e[2 * i], b = e[2 * i + 1];
+        if (!wk_wf_alive(W, a) || wk_wf_next(W, a) != b) {
+            (*n)--;
+            e[2 * i] = e[2 * *n];
+            e[2 * i + 1] = e[2 * *n + 1];
+            continue;
+        }
+        (*k)++;
+        offer(W, o, u, v, a, t, lambda0, best);
+        i++;
+    }
+}
+
 /* The shot over the grid (valid at t): false if the ray starts outside
 ** the grid's box (then the caller walks the cycle). */
 static bool walk_grid(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, wk_point o, wk_point u,
@@ -259,23 +311,10 @@ static bool walk_grid(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, wk_poi
     uint32_t cx = col_of(G, q.x), cy = row_of(G, q.y);
     int sx = (u.x > 0) - (u.x < 0), sy = (u.y > 0) - (u.y < 0);
     uint64_t k = 0;
+    scan_entries(W, G->over, &G->n_over, o, u, v, t, lambda0, best, &k);
     for (;;) {
         mc_pg_cell *C = &G->cells[cy * G->nx + cx];
-        if (C->gen == G->gen) {
-            for (uint32_t e = 0; e < C->n;) {
-                uint32_t a = C->e[2 * e], b = C->e[2 * e + 1];
-                if (!wk_wf_alive(W, a) || wk_wf_next(W, a) != b) {
-                    /* stale for good (ids are never reused): dropped */
-                    C->n--;
-                    C->e[2 * e] = C->e[2 * C->n];
-                    C->e[2 * e + 1] = C->e[2 * C->n + 1];
-                    continue;
-                }
-                k++;
-                offer(W, o, u, v, a, t, lambda0, best);
-                e++;
-            }
-        }
+        if (C->gen == G->gen) scan_entries(W, C->e, &C->n, o, u, v, t, lambda0, best, &k);
         /* exit distances (from o) through the cell's walls */
         double tx = sx > 0   ? (G->x0 + (double)(cx + 1) * G->cw - o.x) / u.x
                     : sx < 0 ? (G->x0 + (double)cx * G->cw - o.x) / u.x

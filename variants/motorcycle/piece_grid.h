@@ -17,7 +17,10 @@
 ** every group by listing the pieces next to the group's fresh vertices from
 ** that moment on.  A piece whose ends changed is not current any more
 ** ("piece (a, b) exists" is "a alive and next(a) == b", wavefront.h); its
-** entries are stale and are dropped when a shot meets them.
+** entries are stale and are dropped when a shot meets them.  A piece whose
+** hull would cover many more cells than its length (a very fast vertex: a
+** nearly straight reflex corner) goes on an overflow list instead, tested
+** by every grid shot.
 **
 ** A shot walks the cells along the ray from where it starts (Amanatides-Woo,
 ** as engine/ray_shoot.c), tests the current pieces listed there with the
@@ -61,6 +64,8 @@ typedef struct mc_piece_grid {
     uint64_t listed;       /* entries listed since the build */
     uint64_t since;        /* pieces tested by cycle walks since the build */
     uint64_t est;          /* entries of the last build (the cost of the next) */
+    uint32_t *over;        /* overflow: pieces tested at every grid shot (a, b) */
+    uint32_t n_over, cap_over; /* pairs; capacity in ids */
 } mc_piece_grid;
 
 /* Empty, closable, no allocation. */
