@@ -207,6 +207,20 @@
 ** when the two places agree within WK_RELOCATE_SLACK * eps_d (the group
 ** moved nothing by more than a few eps_d), else the ray is shot again. */
 #define WK_RELOCATE_SLACK 1e3
+/* Grids over rays and pieces (the motorcycle finder's piece and trace
+** grids): a wavefront piece is listed in every cell within
+** WK_PIECE_GRID_MARGIN * eps_d of the region it sweeps; a ray's hit on it
+** lies within WK_RAY_PIECE_SLACK of its length (far below eps_d on any
+** piece the grid's cells can tell apart) plus rounding of the crossing of
+** it.  A piece that shrinks is listed until WK_PIECE_GRID_COLLAPSE_SLACK *
+** eps_t after its ends meet: the engine computes that edge event from the
+** offset lines, not from these positions, and may take it a few eps_t
+** later.  A trace part is listed WK_TRACE_GRID_PAD * eps_d longer at both
+** ends (a crossing counts up to eps_d beyond a trace's ends) in every cell
+** within twice that of it. */
+#define WK_PIECE_GRID_MARGIN 8.0
+#define WK_PIECE_GRID_COLLAPSE_SLACK 64.0
+#define WK_TRACE_GRID_PAD 2.0
 /* The bisector-segment finder of 000 (variants/) also tests, with the
 ** reference's split test, the pieces of v's cycle next to v's own two
 ** pieces, and goes on past each neighbour that lies within

@@ -298,6 +298,8 @@ Test(motorcycle_graph, grid_matches_brute_force_on_generated_polygons, .timeout 
         {"notched", 300, 0, NULL},     {"notched", 3000, 0, "int"},  {"crossing", 400, 0, NULL},
         {"rectilinear", 500, 0, NULL}, {"rectilinear", 4000, 0, NULL},
         {"monotone", 1000, 0, NULL},   {"holes", 400, 6, NULL},      {"holes", 3000, 40, "uniform"},
+        /* clustered origins: the refined grid (MCG_REFINE_OCCUPANCY) */
+        {"coastline", 2000, 0, NULL},  {"coastline", 8000, 0, NULL},
     };
     uint32_t seeds = quick() ? 1 : 3;
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)

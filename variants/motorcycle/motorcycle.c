@@ -54,6 +54,8 @@
 */
 #include "motorcycle.h"
 #include "motorcycle_graph.h"
+#include "piece_grid.h"
+#include "trace_grid.h"
 #include "event_queue.h"
 #include "wavefront.h"
 
@@ -115,6 +117,9 @@ typedef struct mc_state {
     uint32_t n_unknown, cap_unknown;
     double guard_t;
     uint64_t guard_n;
+    mc_piece_grid pg;    /* ray shots (piece_grid.h) */
+    mc_trace_grid tg;    /* traces by place, built at the first list_crossings */
+    double tg_pad;       /* each part is indexed this much longer at both ends */
 } mc_state;
 
 /* ------------------------------------------------------------ geometry */
@@ -270,12 +275,12 @@ static double hit_piece(const wk_wavefront *W, const mc_seg *S, uint32_t a, doub
     return wk_wf_ray_hit_piece(W, S->o, S->u, a, t, lambda0, mu);
 }
 
-/* The first piece along the trace just after time t: the engine's ray
-** shot over v's cycle (every alive piece with holes), O(cycle). */
+/* The first piece along the trace just after time t: over the grid of
+** swept pieces or v's cycle (piece_grid.h). */
 static uint32_t shoot(mc_state *A, const wk_wavefront *W, const mc_seg *S, uint32_t v, double t,
-                      double lambda0) {
+                      double lambda0, wk_status *st) {
     wk_count(A->R, WK_VC_ray_shots, 1);
-    return wk_wf_ray_shoot(W, S->o, S->u, v, t, lambda0);
+    return mc_pg_shoot(A->R, &A->pg, W, S->o, S->u, v, t, lambda0, st);
 }
 
 /* --------------------------------------------------------------- events */
@@ -417,7 +422,9 @@ static wk_status place_f(mc_state *A, wk_wavefront *W, uint32_t si, double t, bo
     unlink_f(A, si);
     S->beyond = false;
     double lv = lambda_v(W, S, t);
-    uint32_t a = shoot(A, W, S, S->v, t, lv);
+    wk_status st;
+    uint32_t a = shoot(A, W, S, S->v, t, lv, &st);
+    if (st != WK_OK) return st;
     if (a == WK_NONE) {
         if (skipped(A, W, si, old_lf, lv) != WK_OK) return A->R->err.code;
         return note_unknown(A, si);
@@ -431,6 +438,35 @@ static wk_status place_f(mc_state *A, wk_wavefront *W, uint32_t si, double t, bo
         return WK_OK;
     }
     return skipped(A, W, si, old_lf, isfinite(lf) ? lf : lv);
+}
+
+/* Part [l0, l1] of trace si into the trace grid, once it exists. */
+static wk_status index_part(mc_state *A, uint32_t si, double l0, double l1) {
+    if (!mc_tg_built(&A->tg)) return WK_OK;
+    const mc_seg *S = &A->s[si];
+    l0 -= A->tg_pad;
+    l1 += A->tg_pad;
+    wk_point a = {S->o.x + l0 * S->u.x, S->o.y + l0 * S->u.y};
+    wk_point b = {S->o.x + l1 * S->u.x, S->o.y + l1 * S->u.y};
+    return mc_tg_add(A->R, &A->tg, si, a, b);
+}
+
+/* The trace grid over the traces' box, with every trace so far. */
+static wk_status build_trace_grid(mc_state *A, const wk_wavefront *W) {
+    wk_point lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
+    for (uint32_t j = 0; j < A->n_s; j++) {
+        const mc_seg *S = &A->s[j];
+        wk_point e = {S->o.x + S->len * S->u.x, S->o.y + S->len * S->u.y};
+        lo.x = fmin(lo.x, fmin(S->o.x, e.x));
+        lo.y = fmin(lo.y, fmin(S->o.y, e.y));
+        hi.x = fmax(hi.x, fmax(S->o.x, e.x));
+        hi.y = fmax(hi.y, fmax(S->o.y, e.y));
+    }
+    A->tg_pad = WK_TRACE_GRID_PAD * wk_wf_eps_d(W);
+    if (mc_tg_build(A->R, &A->tg, lo, hi, A->n_s, 2.0 * A->tg_pad) != WK_OK) return WK_ENOMEM;
+    for (uint32_t j = 0; j < A->n_s; j++)
+        if (index_part(A, j, 0, A->s[j].len) != WK_OK) return WK_ENOMEM;
+    return WK_OK;
 }
 
 static wk_status new_segment(mc_state *A, uint32_t v, wk_point o, wk_point u, double len,
@@ -448,14 +484,25 @@ static wk_status new_segment(mc_state *A, uint32_t v, wk_point o, wk_point u, do
     S->xf = S->xv = NO_CROSS;
     if (v != WK_NONE) A->seg_of[v] = si;
     *out = si;
-    return WK_OK;
+    return index_part(A, si, 0, len);
 }
 
 /* Crossings of trace si's part lambda in [l0, l1] with the unswept parts
 ** of the other live traces, listed on both (and those re-armed). */
 static wk_status list_crossings(mc_state *A, wk_wavefront *W, uint32_t si, double l0, double l1) {
     double t = wk_wf_now(W), eps = wk_wf_eps_d(W);
-    for (uint32_t j = 0; j < A->n_s; j++) {
+    if (A->n_s == 0) return WK_OK;
+    if (!mc_tg_built(&A->tg) && build_trace_grid(A, W) != WK_OK) return A->R->err.code;
+    /* the candidates: traces listed where the part [l0 - eps, l1 + eps]
+    ** runs (a crossing lies within eps of both traces' indexed parts) */
+    const mc_seg *Q = &A->s[si];
+    double q0 = l0 - A->tg_pad, q1 = l1 + A->tg_pad;
+    if (mc_tg_query(A->R, &A->tg, (wk_point){Q->o.x + q0 * Q->u.x, Q->o.y + q0 * Q->u.y},
+                    (wk_point){Q->o.x + q1 * Q->u.x, Q->o.y + q1 * Q->u.y}) != WK_OK)
+        return A->R->err.code;
+    wk_count(A->R, WK_VC_crossing_candidates, A->tg.n_out);
+    for (uint32_t q = 0; q < A->tg.n_out; q++) {
+        uint32_t j = A->tg.out[q];
         if (j == si || !live(&A->s[j])) continue;
         const mc_seg *S = &A->s[si], *T = &A->s[j];
         double den = S->u.x * T->u.y - S->u.y * T->u.x;
@@ -496,6 +543,7 @@ static wk_status late_segment(mc_state *A, wk_wavefront *W, uint32_t v, double t
     mc_seg *S = &A->s[si];
     double lf = S->pa == WK_NONE ? NAN : lambda_f(W, S, t);
     S->len = isfinite(lf) && lf > 0 ? lf : 0;
+    if (index_part(A, si, 0, S->len) != WK_OK) return R->err.code;
     if (list_crossings(A, W, si, 0, S->len) != WK_OK) return R->err.code;
     return arm_segment(A, W, si);
 }
@@ -514,7 +562,9 @@ static wk_status extend_segment(mc_state *A, wk_wavefront *W, uint32_t si, doubl
     S = &A->s[si];
     double lf = S->pa == WK_NONE ? NAN : lambda_f(W, S, t);
     if (isfinite(lf) && lf > S->len) S->len = lf;
-    if (S->len > old && list_crossings(A, W, si, old, S->len) != WK_OK) return A->R->err.code;
+    if (S->len > old && (index_part(A, si, old, S->len) != WK_OK ||
+                         list_crossings(A, W, si, old, S->len) != WK_OK))
+        return A->R->err.code;
     if (arm_segment(A, W, si) != WK_OK) return A->R->err.code;
     return wk_wf_reschedule(W, A->s[si].v);
 }
@@ -830,6 +880,7 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
     mc_state *A = ud;
     wk_run *R = A->R;
     if (ensure_vertex_arrays(A, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
+    if (mc_pg_after_group(R, &A->pg, W, t) != WK_OK) return R->err.code;
     const uint32_t *fresh, *ended;
     uint32_t n_fresh, n_ended;
     wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
@@ -1255,6 +1306,8 @@ static wk_status motorcycle_run(wk_run *R, const wk_polygon *P, wk_skeleton **ou
     memset(&A, 0, sizeof A);
     A.R = R;
     wk_event_queue_init(&A.Q);
+    mc_pg_init(&A.pg);
+    mc_tg_init(&A.tg);
     wk_status st = wk_wavefront_run(R, P, &motorcycle_finder, &A, out);
     mc_clear(&A);
     /* The trace finder's own check: the skeleton must pass the validator.
@@ -1274,6 +1327,8 @@ static void mc_clear(mc_state *Ap) {
     mc_state A = *Ap;
     wk_run *R = A.R;
     wk_event_queue_clear(R, &A.Q);
+    mc_pg_clear(R, &A.pg);
+    mc_tg_clear(R, &A.tg);
     for (uint32_t si = 0; si < A.n_s; si++)
         if (A.s[si].capx) WK_FREE_ARRAY(R, A.s[si].x, A.s[si].capx);
     WK_FREE_ARRAY(R, A.s, A.cap_s);

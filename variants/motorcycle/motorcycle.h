@@ -20,7 +20,11 @@
     X(late_traces, "traces shot for reflex vertices that are not vertices of P")               \
     X(trace_extensions, "traces extended because the trace they crashed into ended early")      \
     X(ghost_traces, "traces that outlived their vertex to guard the traces ending on them")    \
-    X(ray_shots, "rays shot against the wavefront (O(cycle) each)")                           \
+    X(ray_shots, "rays shot against the wavefront (over the piece grid or a cycle)")         \
+    X(ray_shot_pieces, "wavefront pieces tested by ray shots (grid cells or cycle walks)")      \
+    X(piece_grid_builds, "builds of the grid of swept wavefront pieces for ray shots")         \
+    X(crossing_candidates, "traces the trace grid offered for crossings with an added part")   \
+    X(piece_grid_entries, "cell entries listed in that grid (builds and updates)")             \
     X(reference_fallbacks, "inputs handed to the reference variant (the trace finder failed)")
 
 WK_VARIANT_COUNTER_ENUM(MC_COUNTER_LIST)

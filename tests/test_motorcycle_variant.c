@@ -1,0 +1,45 @@
+/*
+** test_motorcycle_variant.c: the motorcycle variant's own structures under
+** allocation failure: the piece grid of its ray shots and the trace grid of
+** its crossing lists (variants/motorcycle/piece_grid.h, trace_grid.h).
+** With check_invariants every ray shot goes through the piece grid, so the
+** failures land in its builds and updates too.  Skeleton equality with naive
+** is tests/test_motorcycle.py's.
+*/
+#include <criterion/criterion.h>
+
+#include "helpers.h"
+
+Test(motorcycle_variant, every_allocation_failure_is_clean, .timeout = 300) {
+    wk_run R;
+    wk_run_init(&R);
+    R.opt.check_invariants = true;
+    const wk_variant *V = variant("motorcycle");
+    R.variant = V;
+    wk_polygon *P = NULL;
+    /* coastline 400, seed 5: ray shots (so piece grid builds) and trace
+    ** extensions (so the trace grid) happen; asserted below */
+    cr_assert_eq(gen(&R, "coastline", 400, -1, 5, NULL, &P), WK_OK);
+    size_t base = R.alloc.live;
+    int failures = 0;
+    for (int64_t N = 0;; N++) {
+        R.err.code = WK_OK;
+        R.alloc.fail_after = (int64_t)R.alloc.calls + N;
+        wk_skeleton *S = NULL;
+        wk_status st = wk_solve(&R, V, P, &S, NULL, NULL);
+        R.alloc.fail_after = -1;
+        if (S) wk_skeleton_free(&R, S);
+        cr_assert_eq(R.alloc.live, base, "N=%lld: %zu bytes leaked", (long long)N,
+                     R.alloc.live - base);
+        if (st == WK_OK) break;
+        cr_assert_eq(st, WK_ENOMEM, "N=%lld: status %d (%s)", (long long)N, st, R.err.msg);
+        failures++;
+        cr_assert_lt(N, 200000);
+    }
+    cr_assert_gt(failures, 10);
+    cr_assert_gt(counter(&R, "piece_grid_builds"), 0);
+    cr_assert_gt(counter(&R, "crossing_candidates"), 0);
+    cr_assert_eq(counter(&R, "reference_fallbacks"), 0);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
