@@ -14,6 +14,18 @@
 #include <errno.h>
 #include <string.h>
 
+/* s as a JSON string (quotes, backslashes and control characters escaped;
+** the JSON and GeoJSON writers). */
+static inline void wk_write_json_string(FILE *f, const char *s) {
+    fputc('"', f);
+    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
+        if (*c == '"' || *c == '\\') fprintf(f, "\\%c", *c);
+        else if (*c < 0x20) fprintf(f, "\\u%04x", *c);
+        else fputc(*c, f);
+    }
+    fputc('"', f);
+}
+
 /* The checks every writer runs before writing anything. */
 static inline wk_status wk_write_begin(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                                        const char *what) {

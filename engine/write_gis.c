@@ -22,20 +22,10 @@
 */
 #include "write.h"
 
-static void put_json_string(FILE *f, const char *s) {
-    fputc('"', f);
-    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
-        if (*c == '"' || *c == '\\') fprintf(f, "\\%c", *c);
-        else if (*c < 0x20) fprintf(f, "\\u%04x", *c);
-        else fputc(*c, f);
-    }
-    fputc('"', f);
-}
-
 wk_status wk_write_geojson(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
     if (wk_write_begin(R, P, S, "write geojson: ") != WK_OK) return R->err.code;
     fputs("{\"type\": \"FeatureCollection\",\n \"wskel\": {\"polygon\": ", f);
-    put_json_string(f, P->name[0] ? P->name : "polygon");
+    wk_write_json_string(f, P->name[0] ? P->name : "polygon");
     fprintf(f, ", \"n\": %u, \"nodes\": %u, \"arcs\": %u, \"z\": \"t\"},\n \"features\": [", P->n,
             S->n_nodes, S->n_arcs);
     for (uint32_t i = 0; i < S->n_arcs; i++) {
@@ -96,7 +86,7 @@ wk_status wk_write_offsets_geojson(wk_run *R, FILE *f, const wk_polygon *P,
                                    wk_offset_set *const *O, uint32_t n_sets) {
     errno = 0;
     fputs("{\"type\": \"FeatureCollection\",\n \"wskel\": {\"polygon\": ", f);
-    put_json_string(f, P->name[0] ? P->name : "polygon");
+    wk_write_json_string(f, P->name[0] ? P->name : "polygon");
     fputs(", \"offsets\": true},\n \"features\": [", f);
     for (uint32_t i = 0; i < n_sets; i++) {
         fprintf(f,

@@ -28,16 +28,6 @@ static void put_double(FILE *f, double v) {
     else fputs("null", f);
 }
 
-static void put_string(FILE *f, const char *s) {
-    fputc('"', f);
-    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
-        if (*c == '"' || *c == '\\') fprintf(f, "\\%c", *c);
-        else if (*c < 0x20) fprintf(f, "\\u%04x", *c);
-        else fputc(*c, f);
-    }
-    fputc('"', f);
-}
-
 static void put_k(FILE *f, const wk_run_info *info) {
     if (!info || info->k == WK_NONE) fputs("null", f);
     else if (info->k == WK_K_MAX) fputs("\"max\"", f);
@@ -52,7 +42,7 @@ wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skelet
         return R->err.code;
 
     fputs("{\"format\":\"wskel-1\",\"variant\":", f);
-    put_string(f, info && info->variant ? info->variant : "unknown");
+    wk_write_json_string(f, info && info->variant ? info->variant : "unknown");
     fputs(",\"k\":", f);
     put_k(f, info);
     fprintf(f, ",\"n\":%u,\"r\":%u,\"rings\":[", P->n, P->r);

@@ -28,6 +28,31 @@ static void open_array(FILE *f, const char *type, const char *name) {
 
 static bool is_cap(const wk_arc *c) { return c->left == WK_NONE || c->right == WK_NONE; }
 
+/* Points (the nodes in output numbering at (x, y, t)) and the line cells
+** (boundary, then arcs), the same with and without a cap. */
+static void put_points_and_lines(FILE *f, const wk_polygon *P, const wk_skeleton *S,
+                                 const uint32_t *vertex_of) {
+    uint32_t n = P->n, N = S->n_nodes, M = S->n_arcs;
+    fputs("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n", f);
+    for (uint32_t i = 0; i < N; i++) {
+        const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
+        fprintf(f, "%.17g %.17g %.17g\n", v->x, v->y, v->t);
+    }
+    fputs("</DataArray>\n</Points>\n", f);
+    fputs("<Lines>\n", f);
+    open_array(f, "Int64", "connectivity");
+    /* input vertex i to the next of its ring: input numbering keeps each
+    ** ring's index range, so wk_polygon_next's arithmetic holds for it */
+    for (uint32_t i = 0; i < n; i++) fprintf(f, "%u %u\n", i, wk_polygon_next(P, i));
+    for (uint32_t i = 0; i < M; i++)
+        fprintf(f, "%u %u\n", wk_polygon_output_node(P, S->arcs[i].a),
+                wk_polygon_output_node(P, S->arcs[i].b));
+    fputs("</DataArray>\n", f);
+    open_array(f, "Int64", "offsets");
+    for (uint64_t i = 1; i <= (uint64_t)n + M; i++) fprintf(f, "%llu\n", (unsigned long long)(2 * i));
+    fputs("</DataArray>\n</Lines>\n", f);
+}
+
 /* The same file for a roof cut at a height: faces from
 ** wk_capped_faces_build, the cap's arcs and faces of kind KIND_CAP. */
 static wk_status write_vtp_capped(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
@@ -67,22 +92,7 @@ static wk_status write_vtp_capped(wk_run *R, FILE *f, const wk_polygon *P, const
                                                        : KIND_CONVEX);
     for (uint32_t i = 0; i < CF.n_faces; i++) fprintf(f, "%d\n", i < n ? KIND_ROOF : KIND_CAP);
     fputs("</DataArray>\n</CellData>\n", f);
-    fputs("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n", f);
-    for (uint32_t i = 0; i < N; i++) {
-        const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
-        fprintf(f, "%.17g %.17g %.17g\n", v->x, v->y, v->t);
-    }
-    fputs("</DataArray>\n</Points>\n", f);
-    fputs("<Lines>\n", f);
-    open_array(f, "Int64", "connectivity");
-    for (uint32_t i = 0; i < n; i++) fprintf(f, "%u %u\n", i, wk_polygon_next(P, i));
-    for (uint32_t i = 0; i < M; i++)
-        fprintf(f, "%u %u\n", wk_polygon_output_node(P, S->arcs[i].a),
-                wk_polygon_output_node(P, S->arcs[i].b));
-    fputs("</DataArray>\n", f);
-    open_array(f, "Int64", "offsets");
-    for (uint64_t i = 1; i <= (uint64_t)n + M; i++) fprintf(f, "%llu\n", (unsigned long long)(2 * i));
-    fputs("</DataArray>\n</Lines>\n", f);
+    put_points_and_lines(f, P, S, vertex_of);
     fputs("<Polys>\n", f);
     open_array(f, "Int64", "connectivity");
     for (uint32_t fi = 0; fi < CF.n_faces; fi++)
@@ -143,25 +153,7 @@ wk_status wk_write_vtp(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
     for (uint32_t i = 0; i < n; i++) fprintf(f, "%d\n", KIND_ROOF);
     fputs("</DataArray>\n</CellData>\n", f);
 
-    fputs("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n", f);
-    for (uint32_t i = 0; i < N; i++) {
-        const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
-        fprintf(f, "%.17g %.17g %.17g\n", v->x, v->y, v->t);
-    }
-    fputs("</DataArray>\n</Points>\n", f);
-
-    fputs("<Lines>\n", f);
-    open_array(f, "Int64", "connectivity");
-    /* input vertex i to the next of its ring: input numbering keeps each
-    ** ring's index range, so wk_polygon_next's arithmetic holds for it */
-    for (uint32_t i = 0; i < n; i++) fprintf(f, "%u %u\n", i, wk_polygon_next(P, i));
-    for (uint32_t i = 0; i < M; i++)
-        fprintf(f, "%u %u\n", wk_polygon_output_node(P, S->arcs[i].a),
-                wk_polygon_output_node(P, S->arcs[i].b));
-    fputs("</DataArray>\n", f);
-    open_array(f, "Int64", "offsets");
-    for (uint64_t i = 1; i <= (uint64_t)n + M; i++) fprintf(f, "%llu\n", (unsigned long long)(2 * i));
-    fputs("</DataArray>\n</Lines>\n", f);
+    put_points_and_lines(f, P, S, vertex_of);
 
     fputs("<Polys>\n", f);
     open_array(f, "Int64", "connectivity");
