@@ -207,7 +207,7 @@
 ** when the two places agree within WK_RELOCATE_SLACK * eps_d (the group
 ** moved nothing by more than a few eps_d), else the ray is shot again. */
 #define WK_RELOCATE_SLACK 1e3
-/* Grids over rays and pieces (the motorcycle finder's piece and trace
+/* Grids over rays and pieces (002's trace finder: its piece and trace
 ** grids): a wavefront piece is listed in every cell within
 ** WK_PIECE_GRID_MARGIN * eps_d of the region it sweeps; a ray's hit on it
 ** lies within WK_RAY_PIECE_SLACK of its length (far below eps_d on any
