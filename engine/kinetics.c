@@ -117,19 +117,6 @@ bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
 wk_velocity_kind wk_vertex_start(const wk_offset_line *L, uint32_t ein, uint32_t eout, wk_point p,
                                  double t, double snap, wk_point *p0, wk_point *vel, bool *reflex) {
     wk_velocity_kind k = wk_vertex_velocity(&L[ein], &L[eout], vel);
-    if (k == WK_VEL_REGULAR && t > 0) {
-        /* Born in a group between edges antiparallel within WK_PARALLEL_SIN:
-        ** the two offset lines pass through p, so they lie within eps_d of
-        ** each other over the whole polygon; they coincide, and the pieces
-        ** cancel as for exactly antiparallel ones (tolerance.h,
-        ** WK_ANTIPARALLEL_SIN, says why input vertices keep the finer bar). */
-        const wk_offset_line *a = &L[ein], *b = &L[eout];
-        double det = a->nx * b->ny - a->ny * b->nx, dot = a->nx * b->nx + a->ny * b->ny;
-        if (dot < 0 && fabs(det) <= WK_PARALLEL_SIN) {
-            vel->x = vel->y = 0;
-            k = WK_VEL_ANTIPARALLEL;
-        }
-    }
     *reflex = k == WK_VEL_REGULAR && wk_is_reflex_turn(&L[ein], &L[eout]);
     *p0 = p;
     wk_point q;

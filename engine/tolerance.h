@@ -66,15 +66,8 @@
 ** polygons with equal-x chains, turned in random directions). */
 #define WK_PARALLEL_SIN 1e-9
 /* Opposite senses (antiparallel edges: a zero-width spike) keep the old
-** bar for input vertices: at 1e-9, seven small turned grid polygons that
-** passed before failed with "antiparallel wavefront vertex".  A vertex born
-** in a group (t > 0) between edges antiparallel within WK_PARALLEL_SIN is
-** antiparallel (wk_vertex_start): both lines pass through its point, so they
-** coincide within eps_d over the whole polygon, and a regular vertex there
-** moved at up to 1e11 times the edge speed and put the next node 3e-6 off
-** (stress s6-c04959-nearly_straight: a comb tooth whose side has a straight
-** vertex 1.2e-11 off collapsing against the opposite side; naive disagreed
-** with CGAL and the arrangement variant). */
+** bar: at 1e-9, seven small turned grid polygons that passed before failed
+** with "antiparallel wavefront vertex". */
 #define WK_ANTIPARALLEL_SIN 1e-12
 /* The three-lines system of an event (kinetics.c) is solved exactly only
 ** when |det| exceeds this times the sum of the weights: below, the lines
