@@ -77,6 +77,18 @@ static inline int fz_clean_text(const char *s) {
     return 1;
 }
 
+/* GeoJSON's exception to the line rule: jansson keeps no positions for
+** values, so a rejection after parsing names the JSON path instead (line 0);
+** a byte fault or a JSON syntax error must still carry its line.  For a
+** GeoJSON rejection without a line: a finding if it is one of those, else
+** line 1 stands in so that check_status's other rules still apply. */
+static inline void geojson_line_exception(wk_run *R, wk_status st) {
+    if (st != WK_EINPUT || R->err.input_line > 0) return;
+    if (!strncmp(R->err.msg, "JSON error", 10) || !strncmp(R->err.msg, "column", 6))
+        finding("a syntax or byte error without a line: %s", R->err.msg);
+    R->err.input_line = 1;
+}
+
 static inline void check_status(const wk_run *R, wk_status st, const wk_polygon *P,
                                 const char *name) {
     if (st != R->err.code)

@@ -14,11 +14,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     wk_run_init_checked(&R);
     wk_polygon *P = NULL;
     wk_status st = wk_polygon_read_geojson(&R, (const char *)data, size, "fuzz.geojson", &P);
-    if (st == WK_EINPUT && R.err.input_line <= 0) {
-        if (!strncmp(R.err.msg, "JSON error", 10) || !strncmp(R.err.msg, "column", 6))
-            finding("a syntax or byte error without a line: %s", R.err.msg);
-        R.err.input_line = 1; /* the rest of check_status still applies */
-    }
+    geojson_line_exception(&R, st);
     check_status(&R, st, P, "fuzz.geojson");
     if (st == WK_OK) {
         if (bytes_graphml_refusable(data, size)) /* the same byte rules */
