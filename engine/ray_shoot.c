@@ -283,12 +283,8 @@ bool wk_ray_shoot(const wk_ray_shooter *S, wk_point o, wk_point u, uint32_t from
             test_edge(S->P, S->tol, o, u, from_vertex, G->items[k], &best, &found);
         /* Exit distances through the cell's x and y walls, recomputed from
         ** the wall (no accumulated increments). */
-        double tx = sx > 0   ? (G->x0 + (double)(cx + 1) * G->cw - o.x) / u.x
-                    : sx < 0 ? (G->x0 + (double)cx * G->cw - o.x) / u.x
-                             : INFINITY;
-        double ty = sy > 0   ? (G->y0 + (double)(cy + 1) * G->ch - o.y) / u.y
-                    : sy < 0 ? (G->y0 + (double)cy * G->ch - o.y) / u.y
-                             : INFINITY;
+        double tx = wk_grid_exit(G->x0, G->cw, cx, sx, o.x, u.x);
+        double ty = wk_grid_exit(G->y0, G->ch, cy, sy, o.y, u.y);
         double texit = tx < ty ? tx : ty;
         if (found && best.t <= texit) break;
         if (tx < ty) {

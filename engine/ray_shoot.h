@@ -38,6 +38,8 @@
 #ifndef WK_RAY_SHOOT_H
 #define WK_RAY_SHOOT_H
 #include "kinetics.h"
+
+#include <math.h>
 #include "wskel.h"
 
 /* ============================================================ bucket grid */
@@ -152,5 +154,17 @@ bool wk_ray_shoot(const wk_ray_shooter *S, wk_point o, wk_point u, uint32_t from
 ** as a fallback; bit-identical to wk_ray_shoot. */
 bool wk_ray_shoot_brute(const wk_polygon *P, double tol, wk_point o, wk_point u,
                         uint32_t from_vertex, wk_ray_hit *hit);
+
+/* A walk of a ray o + lambda u through a uniform grid (origin x0, cell size
+** cw along one axis): the lambda at which the ray leaves cell index c
+** through its wall in direction s = sign(u) (INFINITY when s == 0),
+** recomputed from the wall, not accumulated, so no error builds up along
+** the walk.  Used for both axes by the engine's segment grid and the
+** variants' own grids. */
+static inline double wk_grid_exit(double x0, double cw, uint32_t c, int s, double o, double u) {
+    return s > 0 ? (x0 + (double)(c + 1) * cw - o) / u
+         : s < 0 ? (x0 + (double)c * cw - o) / u
+                 : INFINITY;
+}
 
 #endif

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "motorcycle.h"
+#include "ray_shoot.h"
 #include "tolerance.h"
 
 /* Time window of a build, in cells of normal motion of the pieces (weight
@@ -316,12 +317,8 @@ static bool walk_grid(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, wk_poi
         mc_pg_cell *C = &G->cells[cy * G->nx + cx];
         if (C->gen == G->gen) scan_entries(W, C->e, &C->n, o, u, v, t, lambda0, best, &k);
         /* exit distances (from o) through the cell's walls */
-        double tx = sx > 0   ? (G->x0 + (double)(cx + 1) * G->cw - o.x) / u.x
-                    : sx < 0 ? (G->x0 + (double)cx * G->cw - o.x) / u.x
-                             : INFINITY;
-        double ty = sy > 0   ? (G->y0 + (double)(cy + 1) * G->ch - o.y) / u.y
-                    : sy < 0 ? (G->y0 + (double)cy * G->ch - o.y) / u.y
-                             : INFINITY;
+        double tx = wk_grid_exit(G->x0, G->cw, cx, sx, o.x, u.x);
+        double ty = wk_grid_exit(G->y0, G->ch, cy, sy, o.y, u.y);
         double texit = tx < ty ? tx : ty;
         if (best->a != WK_NONE && best->lam <= texit) break;
         if (tx < ty) {
