@@ -19,6 +19,14 @@
 ** Offsets need the faces, so they are built (first, before anything is
 ** written) only when times are given: an invalid skeleton whose faces do not
 ** close still draws without them.
+**
+** A roof cut at a height (--height; arcs with the cap, WK_NONE, on one side)
+** draws its cap arcs (green) over the skeleton, and its offsets from the
+** faces of wk_capped_faces_build.  A wall (weight 0) does not move, so the
+** line test above cannot find its wavefront: a wall's face is cut with the
+** plane at height t instead (its sides' node times against t), which is the
+** same cut for any face.  With negative weights the roof reaches outside the
+** polygon, so the viewBox covers every node, not only the polygon.
 */
 #include "write.h"
 
@@ -53,11 +61,12 @@ static void put_offset(FILE *f, const wk_polygon *P, const wk_skeleton *S, uint3
     dx /= l;
     dy /= l;
     double want = P->w[e] * t;
+    bool wall = P->w[e] == 0;
     uint32_t m = 0;
     for (uint32_t i = 0; i < len; i++) {
         const wk_node *a = &S->nodes[cyc[i]], *b = &S->nodes[cyc[i + 1 == len ? 0 : i + 1]];
-        double sa = dx * (a->y - p.y) - dy * (a->x - p.x) - want;
-        double sb = dx * (b->y - p.y) - dy * (b->x - p.x) - want;
+        double sa = wall ? a->t - t : dx * (a->y - p.y) - dy * (a->x - p.x) - want;
+        double sb = wall ? b->t - t : dx * (b->y - p.y) - dy * (b->x - p.x) - want;
         if ((sa > 0) == (sb > 0)) continue;
         double k = sa / (sa - sb), x = a->x + k * (b->x - a->x), y = a->y + k * (b->y - a->y);
         cuts[m++] = (cut){(x - p.x) * dx + (y - p.y) * dy, x, y};
@@ -71,7 +80,14 @@ static void put_offset(FILE *f, const wk_polygon *P, const wk_skeleton *S, uint3
     }
 }
 
-static void put_offsets(FILE *f, const wk_polygon *P, const wk_skeleton *S, const wk_faces *F,
+/* The faces whose cycles the offsets cut: face e's cycle (stored nodes) is
+** node[start[e] .. start[e + 1]) for stored edge edge[e] (edge NULL: e). */
+typedef struct svg_faces {
+    uint32_t n, *start, *node;
+    const uint32_t *edge;
+} svg_faces;
+
+static void put_offsets(FILE *f, const wk_polygon *P, const wk_skeleton *S, const svg_faces *F,
                         const double *offsets, uint32_t n_offsets, double sw, cut *cuts) {
     for (uint32_t k = 0; k < n_offsets; k++) {
         if (!(offsets[k] > 0) || !isfinite(offsets[k])) continue; /* t = 0: the boundary */
@@ -79,18 +95,23 @@ static void put_offsets(FILE *f, const wk_polygon *P, const wk_skeleton *S, cons
                    "stroke-width=\"%.4g\" d=\"",
                 offsets[k], sw * 0.5);
         for (uint32_t e = 0; e < F->n; e++)
-            put_offset(f, P, S, e, F->node + F->start[e], F->start[e + 1] - F->start[e],
-                       offsets[k], cuts);
+            put_offset(f, P, S, F->edge ? F->edge[e] : e, F->node + F->start[e],
+                       F->start[e + 1] - F->start[e], offsets[k], cuts);
         fputs("\"/>\n", f);
     }
 }
 
-static void put_arcs(FILE *f, const wk_polygon *P, const wk_skeleton *S, bool reflex,
+static bool is_cap_arc(const wk_arc *c) { return c->left == WK_NONE || c->right == WK_NONE; }
+
+/* kind: 0 convex, 1 reflex, 2 the cap */
+static void put_arcs(FILE *f, const wk_polygon *P, const wk_skeleton *S, int kind,
                      const char *colour, double sw) {
+    static const char *const CLASS[3] = {"convex", "reflex", "cap"};
     fprintf(f, "<path class=\"%s\" fill=\"none\" stroke=\"%s\" stroke-width=\"%.4g\" d=\"",
-            reflex ? "reflex" : "convex", colour, sw);
+            CLASS[kind], colour, sw);
     for (uint32_t i = 0; i < S->n_arcs; i++) {
-        if (wk_arc_is_reflex(P, S, i) != reflex) continue;
+        bool cap = is_cap_arc(&S->arcs[i]);
+        if (kind == 2 ? !cap : cap || wk_arc_is_reflex(P, S, i) != (kind == 1)) continue;
         const wk_node *a = &S->nodes[S->arcs[i].a], *b = &S->nodes[S->arcs[i].b];
         fputs("M", f);
         put_xy(f, a->x, a->y);
@@ -103,23 +124,49 @@ static void put_arcs(FILE *f, const wk_polygon *P, const wk_skeleton *S, bool re
 wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
                        const double *offsets, uint32_t n_offsets) {
     if (!offsets) n_offsets = 0;
+    bool capped = false;
+    for (uint32_t i = 0; i < S->n_arcs && !capped; i++) capped = is_cap_arc(&S->arcs[i]);
     wk_faces F;
     memset(&F, 0, sizeof F);
+    wk_capped_faces CF;
+    memset(&CF, 0, sizeof CF);
+    uint32_t *edge_of = NULL, *cf_start = NULL;
+    svg_faces SF = {0, NULL, NULL, NULL};
     cut *cuts = NULL;
     uint32_t maxlen = 0;
-    if (wk_write_begin(R, P, S, "write svg: ") != WK_OK ||
-        (n_offsets && wk_faces_build(R, P, S, &F, "write svg (offset curves): ") != WK_OK))
-        return R->err.code;
-    for (uint32_t e = 0; e < F.n; e++)
-        if (F.start[e + 1] - F.start[e] > maxlen) maxlen = F.start[e + 1] - F.start[e];
+    wk_status st = capped ? wk_write_begin_capped(R, P, S, "write svg: ")
+                          : wk_write_begin(R, P, S, "write svg: ");
+    if (st != WK_OK) return st;
+    if (n_offsets && !capped) {
+        if (wk_faces_build(R, P, S, &F, "write svg (offset curves): ") != WK_OK) return R->err.code;
+        SF = (svg_faces){F.n, F.start, F.node, NULL};
+    } else if (n_offsets) {
+        /* the edges' faces of the capped roof, as start offsets */
+        if (wk_input_order(R, P, NULL, &edge_of) != WK_OK ||
+            wk_capped_faces_build(R, P, S, edge_of, &CF, "write svg (offset curves): ") != WK_OK ||
+            !(cf_start = WK_NEW_ARRAY(R, uint32_t, CF.n_edge_faces + 1))) {
+            st = R->err.code;
+            goto out;
+        }
+        cf_start[0] = 0;
+        for (uint32_t e = 0; e < CF.n_edge_faces; e++) cf_start[e + 1] = CF.end[e];
+        SF = (svg_faces){CF.n_edge_faces, cf_start, CF.node, edge_of};
+    }
+    for (uint32_t e = 0; e < SF.n; e++)
+        if (SF.start[e + 1] - SF.start[e] > maxlen) maxlen = SF.start[e + 1] - SF.start[e];
     if (n_offsets && !(cuts = WK_NEW_ARRAY(R, cut, maxlen))) {
-        wk_faces_clear(R, &F);
-        return R->err.code;
+        st = R->err.code;
+        goto out;
     }
 
     wk_point lo, hi;
     wk_polygon_bbox(P, &lo, &hi);
     double x0 = lo.x, x1 = hi.x, y0 = lo.y, y1 = hi.y;
+    for (uint32_t j = 0; j < S->n_nodes; j++) {
+        const wk_node *v = &S->nodes[j];
+        if (!isfinite(v->x) || !isfinite(v->y)) continue;
+        x0 = fmin(x0, v->x), x1 = fmax(x1, v->x), y0 = fmin(y0, v->y), y1 = fmax(y1, v->y);
+    }
     double scale = hypot(x1 - x0, y1 - y0), pad = 0.04 * scale, sw = 0.002 * scale;
     double W = x1 - x0 + 2 * pad, H = y1 - y0 + 2 * pad;
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -127,9 +174,9 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
                "width=\"800\" height=\"%.0f\">\n<title>",
             x0 - pad, -(y1 + pad), W, H, W > 0 ? 800.0 * H / W : 800.0);
     put_xml_text(f, P->name[0] ? P->name : "polygon");
-    fprintf(f, ": weighted straight skeleton, %u nodes, %u arcs (blue convex, orange reflex)"
+    fprintf(f, ": weighted straight skeleton, %u nodes, %u arcs (blue convex, orange reflex%s)"
                "</title>\n<g stroke-linecap=\"round\" stroke-linejoin=\"round\">\n",
-            S->n_nodes, S->n_arcs);
+            S->n_nodes, S->n_arcs, capped ? ", green the cap" : "");
     /* one path, a subpath per ring; evenodd leaves the holes unfilled */
     fprintf(f, "<path class=\"polygon\" fill=\"#f4f1e4\" fill-rule=\"evenodd\" "
                "stroke=\"#333333\" stroke-width=\"%.4g\" d=\"",
@@ -142,16 +189,21 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
         fputs(" Z", f);
     }
     fputs("\"/>\n", f);
-    if (n_offsets) put_offsets(f, P, S, &F, offsets, n_offsets, sw, cuts);
-    put_arcs(f, P, S, false, "#1f5fbf", sw);
-    put_arcs(f, P, S, true, "#e07b00", sw);
+    if (n_offsets) put_offsets(f, P, S, &SF, offsets, n_offsets, sw, cuts);
+    put_arcs(f, P, S, 0, "#1f5fbf", sw);
+    put_arcs(f, P, S, 1, "#e07b00", sw);
+    if (capped) put_arcs(f, P, S, 2, "#2e9e44", sw);
     fprintf(f, "<g class=\"nodes\" fill=\"#222222\">\n");
     for (uint32_t j = 0; j < S->n_nodes; j++)
         fprintf(f, "<circle cx=\"%.10g\" cy=\"%.10g\" r=\"%.4g\"/>\n", S->nodes[j].x,
                 0.0 - S->nodes[j].y, 2 * sw);
     fputs("</g>\n</g>\n</svg>\n", f);
-
+    st = wk_write_end(R, f, "svg");
+out:
     if (cuts) WK_FREE_ARRAY(R, cuts, maxlen);
+    if (cf_start) WK_FREE_ARRAY(R, cf_start, CF.n_edge_faces + 1);
+    if (edge_of) WK_FREE_ARRAY(R, edge_of, P->n);
+    wk_capped_faces_clear(R, &CF);
     wk_faces_clear(R, &F);
-    return wk_write_end(R, f, "svg");
+    return st;
 }

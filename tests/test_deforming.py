@@ -20,6 +20,7 @@ import random
 import sys
 import tempfile
 import unittest
+import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import testlib as tl  # noqa: E402
@@ -192,10 +193,31 @@ class Deforming(unittest.TestCase):
         self.assertEqual(rc, 0, err)
         self.assertIn('NumberOfPolys="5"', out)
         self.assertIn('NumberOfLines="12"', out)
+        # svg: the cap (green) and the wavefront at t = 0.5, walls included:
+        # the two moving sides at y = 0.5 and 3.5, the walls x = 0 and x = 10
+        # between them
         rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--height", "1",
-                               "--format", "svg", path])
-        self.assertEqual(rc, 2)
-        self.assertIn("not written in this format yet", err)
+                               "--format", "svg", "--offset", "0.5", path])
+        self.assertEqual(rc, 0, err)
+        doc = ET.fromstring(out)
+        ns = {"s": "http://www.w3.org/2000/svg"}
+        paths = {p.get("class"): p.get("d") for p in doc.iter("{%s}path" % ns["s"])}
+
+        def segments(d):
+            segs = set()
+            for part in d.split("M")[1:]:
+                a, b = part.split("L")
+                pa = tuple(round(float(x), 9) for x in a.split(","))
+                pb = tuple(round(float(x), 9) for x in b.split(","))
+                segs.add(frozenset((pa, pb)))
+            return segs
+        # SVG's y points down: y is negated
+        self.assertEqual(segments(paths["cap"]),
+                         {frozenset(s) for s in (((0, -1), (10, -1)), ((10, -1), (10, -3)),
+                                                 ((10, -3), (0, -3)), ((0, -3), (0, -1)))})
+        self.assertEqual(segments(paths["offset"]),
+                         {frozenset(s) for s in (((0, -0.5), (10, -0.5)), ((10, -0.5), (10, -3.5)),
+                                                 ((10, -3.5), (0, -3.5)), ((0, -3.5), (0, -0.5)))})
 
     def test_square_with_one_outward_edge(self):
         # a 4 x 4 square whose bottom edge moves outward at speed 1: at t = 2

@@ -502,3 +502,46 @@ Test(writers, out_of_memory_at_every_allocation) {
         }
     }
 }
+
+/* The unit square's roof cut at H = 0.25 (a capped skeleton, as the deforming
+** variant writes it): four corner arcs up to the cap's nodes, and the cap's
+** four arcs with no face (WK_NONE) on their left.  SVG draws the cap and the
+** wavefront at t = 0.125 from the capped faces; every allocation failure of
+** that path is clean. */
+static const wk_node CAP_NODES[4] = {
+    {0.25, 0.25, 0.25}, {0.75, 0.25, 0.25}, {0.75, 0.75, 0.25}, {0.25, 0.75, 0.25}};
+static const arc4 CAP_ARCS[8] = {{0, 4, 3, 0},       {1, 5, 0, 1},       {2, 6, 1, 2},
+                                 {3, 7, 2, 3},       {4, 5, WK_NONE, 0}, {5, 6, WK_NONE, 1},
+                                 {6, 7, WK_NONE, 2}, {7, 4, WK_NONE, 3}};
+
+Test(write_svg, capped_roof_and_its_offsets) {
+    for (int64_t k = 0;; k++) {
+        wk_run R;
+        wk_run_init(&R);
+        wk_polygon *P = polygon(&R, 4, SQ_X, SQ_Y, NULL);
+        wk_skeleton *S = skeleton(&R, P, 4, CAP_NODES, 8, CAP_ARCS);
+        const double t[1] = {0.125};
+        FILE *f = tmpfile();
+        R.alloc.fail_after = (int64_t)R.alloc.calls + k;
+        wk_status st = wk_write_svg(&R, f, P, S, t, 1);
+        R.alloc.fail_after = -1;
+        if (st == WK_OK) {
+            char *s = slurp(f);
+            const char *cap = strstr(s, "class=\"cap\"");
+            cr_assert(cap, "%s", s);
+            cr_assert(strstr(cap, "M0.25,-0.25L0.75,-0.25"), "%s", s);
+            cr_assert_eq(count_of(cap, "M"), 4);
+            /* the bottom edge's wavefront at t = 0.125 */
+            cr_assert(strstr(s, "M0.125,-0.125L0.875,-0.125"), "%s", s);
+            free(s);
+        } else {
+            fclose(f);
+            cr_assert_eq(st, WK_ENOMEM, "allocation %lld: %s", (long long)k, R.err.msg);
+            cr_assert_lt(k, 100);
+        }
+        wk_skeleton_free(&R, S);
+        wk_polygon_free(&R, P);
+        ASSERT_CLEAN_CLOSE(R);
+        if (st == WK_OK) break;
+    }
+}
