@@ -160,6 +160,13 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     const wk_offset_line *L = &W->L[A->eout];
     double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
     if (rate >= -WK_APPROACH_REL * (L->w + fabs(V->vel.x) + fabs(V->vel.y))) return;
+    /* A PSLG's initial wavefront touches itself: the two sides of a segment
+    ** and the corners around a node start on each other's lines.  A vertex
+    ** of the initial wavefront that starts on (or behind) the piece's line
+    ** and moves behind it can meet that line only at t = 0, where a valid
+    ** PSLG has no contact but these (its edges do not cross or touch): no
+    ** split.  (Its distance from the line is linear in t.) */
+    if (W->P->pslg && V->t0 == 0 && wk_offset_distance(L, V->p0, 0) <= W->eps_d) return;
     wk_point pv = wk_wf_pos(V, W->t_now);
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
@@ -431,6 +438,8 @@ static wk_status simulate(wk_wavefront *W) {
             }
         }
         if (!W->Q.size) break;
+        /* a PSLG's horizon: events after it are not part of the skeleton */
+        if (P->pslg && R->opt.until > 0 && tq > R->opt.until) break;
         uint32_t first = wk_event_queue_pop(R, &W->Q);
         double t = W->v[first].ev_t;
         if (t < W->t_now) t = W->t_now;
@@ -449,6 +458,9 @@ static wk_status simulate(wk_wavefront *W) {
         }
         if (process_group(W, t) != WK_OK) return R->err.code;
     }
+    /* A PSLG's outer wavefront never vanishes: what is alive at the
+    ** horizon ends there (wavefront_horizon.c). */
+    if (P->pslg) return wf_close_at_horizon(W);
     for (uint32_t i = 0; i < W->nv; i++)
         if (W->v[i].alive) {
             return WK_FAIL(R, WK_EALGO, P->name, 0,

@@ -117,6 +117,12 @@ void wf_link(wk_wavefront *W, uint32_t a, uint32_t b);
 wk_status wf_mark_fresh(wk_wavefront *W, uint32_t v);
 wk_status wf_push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint32_t x);
 
+/* wavefront_horizon.c: a PSLG's wavefront at its horizon T (R->opt.until,
+** or the default after the last event): every alive vertex ends at a node
+** at t = T and the pieces between them become the cap's arcs; sets
+** W->S->horizon. */
+wk_status wf_close_at_horizon(wk_wavefront *W);
+
 /* wavefront_group.c: resolve the group of events seeded by W->seeds at
 ** time t (W->fresh and W->dead list what it created and ended). */
 wk_status wf_resolve_group(wk_wavefront *W, double t);

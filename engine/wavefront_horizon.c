@@ -1,0 +1,51 @@
+/*
+** wavefront_horizon.c: the end of a PSLG's wavefront at its time horizon.
+** A PSLG's skeleton is unbounded (the outer face's wavefront grows
+** forever), so the simulation stops at a horizon T: R->opt.until (--until),
+** or by default WK_PSLG_HORIZON_MARGIN diagonals (for the fastest edge)
+** after the last event, when every bounded wavefront component has
+** vanished and every node of the unbounded skeleton exists.
+**
+** Invariant on return: no vertex is alive; every vertex alive at T has an
+** arc from where it started to its node at T (faces ein, eout), a vertex
+** born at T ends at its own node; the piece a -> next(a) of each such
+** vertex is a cap arc from a's node at T to next(a)'s, left WK_NONE (the
+** unswept side), right the piece's edge (the swept face), as a roof cut at
+** a height stores its cap; S->horizon = T.
+*/
+#include "wavefront_internal.h"
+
+#include <math.h>
+
+wk_status wf_close_at_horizon(wk_wavefront *W) {
+    wk_run *R = W->R;
+    const wk_polygon *P = W->P;
+    double T = R->opt.until;
+    if (!(T > 0)) {
+        double wmax = 0;
+        for (uint32_t e = 0; e < P->n; e++) wmax = fmax(wmax, P->w[e]);
+        T = W->t_now + WK_PSLG_HORIZON_MARGIN * wk_polygon_scale(P) / wmax;
+    }
+    /* the last group may sit up to eps_t after the horizon it was taken at */
+    if (T < W->t_now) T = W->t_now;
+    for (uint32_t v = 0; v < W->nv; v++) {
+        wk_wf_vertex *V = &W->v[v];
+        if (!V->alive) continue;
+        if (V->t0 >= T) {
+            V->at = V->node;
+            continue;
+        }
+        wk_point q = wk_wf_pos(V, T);
+        if (wk_skeleton_add_node(R, W->S, q.x + W->origin.x, q.y + W->origin.y, T, &V->at) != WK_OK)
+            return R->err.code;
+        if (wf_add_arc(W, V->node, V->at, V->ein, V->eout) != WK_OK) return R->err.code;
+    }
+    for (uint32_t v = 0; v < W->nv; v++) {
+        wk_wf_vertex *V = &W->v[v];
+        if (!V->alive) continue;
+        if (wf_add_arc(W, V->at, W->v[V->next].at, WK_NONE, V->eout) != WK_OK) return R->err.code;
+    }
+    for (uint32_t v = 0; v < W->nv; v++) W->v[v].alive = 0;
+    W->S->horizon = T;
+    return WK_OK;
+}
