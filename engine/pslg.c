@@ -164,8 +164,9 @@ static wk_status check_nodes(pslg_ctx *C, uint32_t *order) {
     for (uint32_t v = 0; v < C->nv; v++)
         if (C->deg[v] == 0)
             return WK_FAIL(R, WK_EINPUT, C->name, nline(C, v),
-                           "node %u is isolated (on no edge): a PSLG vertex needs at least one "
-                           "edge, an isolated point has no wavefront edge to move (remove it)",
+                           "node %u (document order) is isolated (on no edge): a PSLG vertex "
+                           "needs an edge, an isolated point has no wavefront edge to move "
+                           "(remove it)",
                            v);
     for (uint32_t v = 0; v < C->nv; v++) order[v] = v;
     merge_sort(C, order, C->tmp, C->nv, node_less);
@@ -212,11 +213,12 @@ static wk_status check_edges(pslg_ctx *C, uint32_t *order) {
             if (m == WK_SEG_DISJOINT || (shared == 1 && m == WK_SEG_TOUCH)) continue;
             const char *how = m == WK_SEG_CROSS     ? "crosses"
                               : m == WK_SEG_OVERLAP ? "overlaps"
-                                                    : "touches (a node inside the other edge)";
+                                                    : "touches";
             return WK_FAIL(R, WK_EINPUT, C->name, eline(C, hi),
                            "edge %u %s edge %u (edge %u on line %ld): a PSLG's edges meet only at "
-                           "shared nodes",
-                           hi, how, lo, lo, eline(C, lo));
+                           "shared nodes%s",
+                           hi, how, lo, lo, eline(C, lo),
+                           m == WK_SEG_TOUCH ? " (here a node lies inside the other edge)" : "");
         }
     }
     return WK_OK;
@@ -338,9 +340,8 @@ wk_status wk_pslg_from_arrays(wk_run *R, uint32_t nv, const double *x, const dou
                               const double *w, const char *name, const long *node_line,
                               const long *edge_line, wk_polygon **out) {
     *out = NULL;
-    if (nv == 0 || ne == 0)
-        return WK_FAIL(R, WK_EINPUT, name, 0, "the graph has %s: a PSLG needs at least one edge",
-                       nv == 0 ? "no nodes" : "no edges");
+    if (nv == 0) return WK_FAIL(R, WK_EINPUT, name, 0, "the graph has no nodes");
+    /* no edges: every node is isolated, which check_nodes reports with its line */
     if (ne > WK_POLYGON_MAX_N / 3)
         return WK_FAIL(R, WK_EINPUT, name, 0, "too many edges (%u; the limit is %u)", ne,
                        WK_POLYGON_MAX_N / 3);
