@@ -19,13 +19,18 @@
 **       ends at t = T (within tol_t).
 **   (d) faces: for every edge e, the darts of face e (edge e from corner e
 **       to corner next(e); each arc with e on its left a -> b, with e on
-**       its right b -> a) form exactly one closed cycle through corner e:
-**       every node of it has one dart in and one out, and the walk from
-**       corner e uses them all.
-**   (e) each face cycle, repeated points merged (a cap is a side of length
-**       0 at t = 0), is a simple polygon (no two sides meet but adjacent
-**       ones at their shared end; a contact is ignored where an end of one
-**       side lies within tol of the other: rounding) with positive area.
+**       its right b -> a) form closed loops: every node of them has one
+**       dart out and the walks use each dart once; the first loop runs
+**       through corner e (the face's boundary), any others are islands
+**       (with unequal weights a fast edge can sweep round a slow segment
+**       and close behind it, as round a hole: tests/test_pslg.c).
+**   (e) each loop, repeated points merged (a cap is a side of length 0 at
+**       t = 0), is a simple polygon (no two sides meet but adjacent ones at
+**       their shared end; a contact is ignored where an end of one side lies
+**       within tol of the other: rounding); the boundary is
+**       counter-clockwise, each island clockwise, inside the boundary and
+**       in no other island, and no two loops of a face meet.  So the
+**       face's winding number is 0 or 1 everywhere.
 **   (f) the cap: its darts (each cap arc b -> a, as the boundary of the
 **       face on its right) form closed cycles, each simple, pairwise
 **       disjoint (within tol as in (e)), and the winding number of the cap
@@ -41,7 +46,8 @@
 ** cap's side at t = 0 has length 0.  So for every point x off the arcs and
 ** edges, the sum over faces of wind(face, x) = wind(cap, x).  By (e) each
 ** face has winding number 0 or 1, by (f) the cap too, so no point lies in
-** two faces: the faces are simple polygons with disjoint interiors, no two
+** two faces: the faces (simple polygons, some with islands) have disjoint
+** interiors, no two
 ** arcs cross, and together they cover exactly the region the cap encloses
 ** (where the cap's winding number is 1), the region swept by T.  By (c)
 ** every node lies on the offset lines, at its time, of the edges whose
@@ -117,18 +123,6 @@ static bool ring_simple(const wk_point *q, uint32_t m, double tol, uint32_t *bi,
     return true;
 }
 
-/* The points of a node cycle, repeated consecutive points merged. */
-static uint32_t ring_points(const wk_skeleton *S, const uint32_t *cyc, uint32_t L, wk_point *q) {
-    uint32_t m = 0;
-    for (uint32_t i = 0; i < L; i++) {
-        wk_point p = {S->nodes[cyc[i]].x, S->nodes[cyc[i]].y};
-        if (m && q[m - 1].x == p.x && q[m - 1].y == p.y) continue;
-        q[m++] = p;
-    }
-    while (m > 1 && q[m - 1].x == q[0].x && q[m - 1].y == q[0].y) m--;
-    return m;
-}
-
 /* Exact point-in-ring by crossings (q not on the ring: cycles are disjoint). */
 static bool ring_contains(const wk_point *q, uint32_t m, wk_point p) {
     bool in = false;
@@ -141,27 +135,76 @@ static bool ring_contains(const wk_point *q, uint32_t m, wk_point p) {
     return in;
 }
 
-/* Walks the darts d[lo, hi) of one face (sorted by from) as one cycle
-** starting at `start`; writes the nodes to cyc.  False if a node has two
-** darts out, or the walk does not use them all. */
-static bool walk_cycle(const dart *d, size_t lo, size_t hi, uint32_t start, uint32_t *cyc,
-                       uint32_t *len) {
+/* The loops of the darts d[lo, hi) (sorted by from, one face or the cap):
+** first the one through `start` (WK_NONE: none required), then every other,
+** each as points in q from qs[k] (repeated consecutive points merged).  A
+** used dart gets face `used`.  False (*bad = the node) if a node has two
+** darts out of it or a walk comes to a node with none left. */
+static bool walk_loops(const wk_skeleton *S, dart *d, size_t lo, size_t hi, uint32_t start,
+                       uint32_t used, wk_point *q, uint32_t *qs, uint32_t *n_loops, uint32_t *bad) {
     for (size_t i = lo + 1; i < hi; i++)
-        if (d[i].from == d[i - 1].from) return false;
-    uint32_t L = 0, u = start;
-    do {
-        size_t a = lo, b = hi; /* binary search for from == u */
-        while (a < b) {
-            size_t mid = a + (b - a) / 2;
-            if (d[mid].from < u) a = mid + 1;
-            else b = mid;
+        if (d[i].from == d[i - 1].from) {
+            *bad = d[i].from;
+            return false;
         }
-        if (a == hi || d[a].from != u || L >= hi - lo) return false;
-        cyc[L++] = u;
-        u = d[a].to;
-    } while (u != start);
-    *len = L;
-    return L == hi - lo;
+    uint32_t nq = 0, nl = 0;
+    size_t next_unused = lo;
+    for (;;) {
+        uint32_t u = start;
+        if (nl > 0 || start == WK_NONE) {
+            while (next_unused < hi && d[next_unused].face == used) next_unused++;
+            if (next_unused == hi) break;
+            u = d[next_unused].from;
+        }
+        uint32_t first = u, q0 = nq;
+        qs[nl++] = nq;
+        do {
+            size_t a = lo, b = hi;
+            while (a < b) {
+                size_t mid = a + (b - a) / 2;
+                if (d[mid].from < u) a = mid + 1;
+                else b = mid;
+            }
+            if (a == hi || d[a].from != u || d[a].face == used) {
+                *bad = u;
+                return false;
+            }
+            d[a].face = used;
+            wk_point p = {S->nodes[u].x, S->nodes[u].y};
+            if (nq == q0 || q[nq - 1].x != p.x || q[nq - 1].y != p.y) q[nq++] = p;
+            u = d[a].to;
+        } while (u != first);
+        while (nq > q0 + 1 && q[nq - 1].x == q[q0].x && q[nq - 1].y == q[q0].y) nq--;
+    }
+    qs[nl] = nq;
+    *n_loops = nl;
+    return true;
+}
+
+/* Loops k = 0 .. nl-1 of points q[qs[k] .. qs[k+1]): each simple with
+** nonzero area, no two meeting (within tol, as sides_meet).  On failure
+** *la, *lb name the loops (equal: one loop is not simple). */
+static bool loops_simple_disjoint(const wk_point *q, const uint32_t *qs, uint32_t nl, double tol,
+                                  uint32_t *la, uint32_t *lb) {
+    for (uint32_t k = 0; k < nl; k++) {
+        uint32_t m = qs[k + 1] - qs[k], bi, bj;
+        *la = *lb = k;
+        if (m < 3 || wk_shoelace_exact(q + qs[k], m) == 0 || !ring_simple(q + qs[k], m, tol, &bi, &bj))
+            return false;
+    }
+    for (uint32_t k = 0; k < nl; k++)
+        for (uint32_t k2 = k + 1; k2 < nl; k2++) {
+            const wk_point *qa = q + qs[k], *qb = q + qs[k2];
+            uint32_t ma = qs[k + 1] - qs[k], mb = qs[k2 + 1] - qs[k2];
+            for (uint32_t i = 0; i < ma; i++)
+                for (uint32_t j = 0; j < mb; j++)
+                    if (sides_meet(qa, i, j, ma, qb, mb, false, tol)) {
+                        *la = k;
+                        *lb = k2;
+                        return false;
+                    }
+        }
+    return true;
 }
 
 wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
@@ -232,20 +275,18 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
             }
         }
     }
-    /* (d) darts: faces 0..n-1, the cap as face n */
+    /* (d) darts: faces 0..n-1, the cap as face n; used darts get face n + 1 */
     size_t m = 2 * (size_t)S->n_arcs + P->n;
     dart *d = WK_NEW_ARRAY(R, dart, m);
-    uint32_t *cyc = WK_NEW_ARRAY(R, uint32_t, m + 1);
     wk_point *q = WK_NEW_ARRAY(R, wk_point, m + 1);
-    double *cap_area = NULL;
-    uint32_t *cap_start = NULL, n_cycles = 0, cap_cycles_cap = 0;
+    uint32_t *qs = WK_NEW_ARRAY(R, uint32_t, m + 2);
     wk_status st = WK_OK;
-    if (!d || !cyc || !q) {
+    if (!d || !q || !qs) {
         st = R->err.code;
         goto done;
     }
     size_t k = 0;
-    const uint32_t CAP = P->n;
+    const uint32_t CAP = P->n, USED = P->n + 1;
     for (uint32_t i = 0; i < S->n_arcs; i++) {
         const wk_arc *c = &S->arcs[i];
         if (c->left == WK_NONE) d[k++] = (dart){CAP, c->b, c->a};
@@ -254,137 +295,96 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
     }
     for (uint32_t e = 0; e < P->n; e++) d[k++] = (dart){e, e, wk_polygon_next(P, e)};
     qsort(d, m, sizeof *d, dart_cmp);
-    double face_area = 0, face_len = 0;
+    double face_area = 0;
     size_t lo = 0;
+    uint32_t nl, bad, la, lb;
     for (uint32_t e = 0; e < P->n; e++) {
         size_t hi = lo;
         while (hi < m && d[hi].face == e) hi++;
-        uint32_t L;
-        if (!walk_cycle(d, lo, hi, e, cyc, &L)) {
+        if (!walk_loops(S, d, lo, hi, e, USED, q, qs, &nl, &bad)) {
             st = WK_FAIL(R, WK_EINVALID, name, 0,
-                         "validate (pslg d): the arcs of face %u do not form one closed cycle "
-                         "through its edge (%zu sides)",
-                         e, hi - lo);
+                         "validate (pslg d): the face of edge %u is not closed at node %u", e, bad);
             goto done;
         }
         /* (e) */
-        uint32_t mq = ring_points(S, cyc, L, q), bi, bj;
-        double area = mq >= 3 ? 0.5 * wk_shoelace_exact(q, mq) : 0;
-        if (!(area > 0)) {
-            st = WK_FAIL(R, WK_EINVALID, name, 0,
-                         "validate (pslg e): face %u has area %.3g (not positive)", e, area);
+        if (!loops_simple_disjoint(q, qs, nl, tol, &la, &lb)) {
+            if (la == lb)
+                st = WK_FAIL(R, WK_EINVALID, name, 0,
+                             "validate (pslg e): face %u is not simple (%s %u)", e,
+                             la ? "its island" : "its boundary", la);
+            else
+                st = WK_FAIL(R, WK_EINVALID, name, 0,
+                             "validate (pslg e): face %u's loops %u and %u meet", e, la, lb);
             goto done;
         }
-        if (!ring_simple(q, mq, tol, &bi, &bj)) {
-            st = WK_FAIL(R, WK_EINVALID, name, 0,
-                         "validate (pslg e): face %u is not simple: its sides %u and %u meet", e,
-                         bi, bj);
-            goto done;
+        for (uint32_t l = 0; l < nl; l++) {
+            double area = 0.5 * wk_shoelace_exact(q + qs[l], qs[l + 1] - qs[l]);
+            bool inside_outer = l == 0 || ring_contains(q, qs[1], q[qs[l]]);
+            bool in_island = false;
+            for (uint32_t l2 = 1; l2 < nl && l > 0; l2++)
+                if (l2 != l && ring_contains(q + qs[l2], qs[l2 + 1] - qs[l2], q[qs[l]])) in_island = true;
+            if ((l == 0) != (area > 0) || !inside_outer || in_island) {
+                st = WK_FAIL(R, WK_EINVALID, name, 0,
+                             "validate (pslg e): face %u: %s %u has area %.3g%s", e,
+                             l ? "island" : "boundary", l, area,
+                             !inside_outer ? " and lies outside the boundary"
+                             : in_island   ? " and lies inside another island"
+                                           : " (the boundary must be counter-clockwise, islands "
+                                             "clockwise)");
+                goto done;
+            }
+            face_area += area;
         }
-        face_area += area;
         lo = hi;
     }
-    /* (f) the cap: cycles */
-    size_t cap_lo = lo, cap_hi = m;
-    for (size_t i = cap_lo + 1; i < cap_hi; i++)
-        if (d[i].from == d[i - 1].from) {
-            st = WK_FAIL(R, WK_EINVALID, name, 0,
-                         "validate (pslg f): two cap arcs leave node %u", d[i].from);
-            goto done;
-        }
-    if (cap_hi == cap_lo) {
+    /* (f) the cap */
+    if (lo == m) {
         st = WK_FAIL(R, WK_EINVALID, name, 0,
                      "validate (pslg f): no cap: a PSLG's outer wavefront never vanishes");
         goto done;
     }
-    {
-        /* walk each cycle once: mark used darts by setting face to CAP + 1 */
-        uint32_t nq = 0;
-        for (size_t i = cap_lo; i < cap_hi; i++) {
-            if (d[i].face != CAP) continue;
-            if (WK_GROW(R, cap_start, cap_cycles_cap, n_cycles + 2) != WK_OK) {
-                st = R->err.code;
-                goto done;
-            }
-            cap_start[n_cycles++] = nq;
-            uint32_t u = d[i].from, start = u, steps = 0;
-            do {
-                size_t a = cap_lo, b = cap_hi;
-                while (a < b) {
-                    size_t mid = a + (b - a) / 2;
-                    if (d[mid].from < u) a = mid + 1;
-                    else b = mid;
-                }
-                if (a == cap_hi || d[a].from != u || d[a].face != CAP || ++steps > cap_hi - cap_lo) {
-                    st = WK_FAIL(R, WK_EINVALID, name, 0,
-                                 "validate (pslg f): the cap is not closed at node %u", u);
-                    goto done;
-                }
-                d[a].face = CAP + 1;
-                q[nq++] = (wk_point){S->nodes[u].x, S->nodes[u].y};
-                u = d[a].to;
-            } while (u != start);
-        }
-        cap_start[n_cycles] = nq;
-        cap_area = WK_NEW_ARRAY(R, double, n_cycles);
-        if (!cap_area) {
-            st = R->err.code;
+    if (!walk_loops(S, d, lo, m, WK_NONE, USED, q, qs, &nl, &bad)) {
+        st = WK_FAIL(R, WK_EINVALID, name, 0, "validate (pslg f): the cap is not closed at node %u", bad);
+        goto done;
+    }
+    if (!loops_simple_disjoint(q, qs, nl, tol, &la, &lb)) {
+        if (la == lb)
+            st = WK_FAIL(R, WK_EINVALID, name, 0,
+                         "validate (pslg f): cap cycle %u is not a simple polygon", la);
+        else
+            st = WK_FAIL(R, WK_EINVALID, name, 0, "validate (pslg f): cap cycles %u and %u meet",
+                         la, lb);
+        goto done;
+    }
+    double cap_sum = 0, cap_len = 0;
+    for (uint32_t c = 0; c < nl; c++) {
+        uint32_t mc = qs[c + 1] - qs[c];
+        const wk_point *qc = q + qs[c];
+        double area = 0.5 * wk_shoelace_exact(qc, mc);
+        cap_sum += area;
+        for (uint32_t i = 0; i < mc; i++)
+            cap_len += hypot(qc[(i + 1) % mc].x - qc[i].x, qc[(i + 1) % mc].y - qc[i].y);
+        int outside = 0, sgn = area > 0 ? 1 : -1;
+        for (uint32_t c2 = 0; c2 < nl; c2++)
+            if (c2 != c && ring_contains(q + qs[c2], qs[c2 + 1] - qs[c2], qc[0]))
+                outside += wk_shoelace_exact(q + qs[c2], qs[c2 + 1] - qs[c2]) > 0 ? 1 : -1;
+        if (outside < 0 || outside > 1 || outside + sgn < 0 || outside + sgn > 1) {
+            st = WK_FAIL(R, WK_EINVALID, name, 0,
+                         "validate (pslg f): the cap's winding number is %d next to cap cycle %u "
+                         "(faces overlap)",
+                         outside < 0 || outside > 1 ? outside : outside + sgn, c);
             goto done;
         }
-        double cap_sum = 0, cap_len = 0;
-        for (uint32_t c = 0; c < n_cycles; c++) {
-            const wk_point *qc = q + cap_start[c];
-            uint32_t mc = cap_start[c + 1] - cap_start[c], bi, bj;
-            cap_area[c] = mc >= 3 ? 0.5 * wk_shoelace_exact(qc, mc) : 0;
-            cap_sum += cap_area[c];
-            for (uint32_t i = 0; i < mc; i++)
-                cap_len += hypot(qc[(i + 1) % mc].x - qc[i].x, qc[(i + 1) % mc].y - qc[i].y);
-            if (mc < 3 || cap_area[c] == 0 || !ring_simple(qc, mc, tol, &bi, &bj)) {
-                st = WK_FAIL(R, WK_EINVALID, name, 0,
-                             "validate (pslg f): cap cycle %u (%u nodes) is not a simple polygon",
-                             c, mc);
-                goto done;
-            }
-        }
-        for (uint32_t c = 0; c < n_cycles; c++)
-            for (uint32_t c2 = c + 1; c2 < n_cycles; c2++) {
-                const wk_point *qa = q + cap_start[c], *qb = q + cap_start[c2];
-                uint32_t ma = cap_start[c + 1] - cap_start[c], mb = cap_start[c2 + 1] - cap_start[c2];
-                for (uint32_t i = 0; i < ma; i++)
-                    for (uint32_t j = 0; j < mb; j++)
-                        if (sides_meet(qa, i, j, ma, qb, mb, false, tol)) {
-                            st = WK_FAIL(R, WK_EINVALID, name, 0,
-                                         "validate (pslg f): cap cycles %u and %u meet", c, c2);
-                            goto done;
-                        }
-            }
-        for (uint32_t c = 0; c < n_cycles; c++) {
-            int outside = 0, s = cap_area[c] > 0 ? 1 : -1;
-            for (uint32_t c2 = 0; c2 < n_cycles; c2++)
-                if (c2 != c && ring_contains(q + cap_start[c2], cap_start[c2 + 1] - cap_start[c2],
-                                             q[cap_start[c]]))
-                    outside += cap_area[c2] > 0 ? 1 : -1;
-            if (outside < 0 || outside > 1 || outside + s < 0 || outside + s > 1) {
-                st = WK_FAIL(R, WK_EINVALID, name, 0,
-                             "validate (pslg f): the cap's winding number is %d next to cap cycle "
-                             "%u (faces overlap)",
-                             outside < 0 || outside > 1 ? outside : outside + s, c);
-                goto done;
-            }
-        }
-        /* (g) */
-        rep->area_error = fabs(face_area - cap_sum);
-        (void)face_len;
-        if (rep->area_error > 1e-6 * fabs(cap_sum) + tol * cap_len)
-            st = WK_FAIL(R, WK_EINVALID, name, 0,
-                         "validate (pslg g): the faces' areas sum to %.17g, the cap encloses %.17g",
-                         face_area, cap_sum);
     }
+    /* (g) */
+    rep->area_error = fabs(face_area - cap_sum);
+    if (rep->area_error > 1e-6 * fabs(cap_sum) + tol * cap_len)
+        st = WK_FAIL(R, WK_EINVALID, name, 0,
+                     "validate (pslg g): the faces' areas sum to %.17g, the cap encloses %.17g",
+                     face_area, cap_sum);
 done:
     WK_FREE_ARRAY(R, d, m);
-    WK_FREE_ARRAY(R, cyc, m + 1);
     WK_FREE_ARRAY(R, q, m + 1);
-    WK_FREE_ARRAY(R, cap_area, n_cycles);
-    WK_FREE_ARRAY(R, cap_start, cap_cycles_cap);
+    WK_FREE_ARRAY(R, qs, m + 2);
     return st;
 }
