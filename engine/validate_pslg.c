@@ -30,7 +30,10 @@
 **       within tol of the other: rounding); the boundary is
 **       counter-clockwise, each island clockwise, inside the boundary and
 **       in no other island, and no two loops of a face meet.  So the
-**       face's winding number is 0 or 1 everywhere.
+**       face's winding number is 0 or 1 everywhere.  Except: a face whose
+**       only loop has all its nodes at t <= tol_t is empty (the edge was
+**       swept at t = 0 by the collinear rule: collinear edges of
+**       different weights at a node of degree 2), winding number 0.
 **   (f) the cap: its darts (each cap arc b -> a, as the boundary of the
 **       face on its right) form closed cycles, each simple, pairwise
 **       disjoint (within tol as in (e)), and the winding number of the cap
@@ -141,7 +144,9 @@ static bool ring_contains(const wk_point *q, uint32_t m, wk_point p) {
 ** used dart gets face `used`.  False (*bad = the node) if a node has two
 ** darts out of it or a walk comes to a node with none left. */
 static bool walk_loops(const wk_skeleton *S, dart *d, size_t lo, size_t hi, uint32_t start,
-                       uint32_t used, wk_point *q, uint32_t *qs, uint32_t *n_loops, uint32_t *bad) {
+                       uint32_t used, wk_point *q, uint32_t *qs, uint32_t *n_loops, uint32_t *bad,
+                       double *t_max0) {
+    *t_max0 = 0;
     for (size_t i = lo + 1; i < hi; i++)
         if (d[i].from == d[i - 1].from) {
             *bad = d[i].from;
@@ -170,6 +175,7 @@ static bool walk_loops(const wk_skeleton *S, dart *d, size_t lo, size_t hi, uint
                 return false;
             }
             d[a].face = used;
+            if (nl == 1 && S->nodes[u].t > *t_max0) *t_max0 = S->nodes[u].t;
             wk_point p = {S->nodes[u].x, S->nodes[u].y};
             if (nq == q0 || q[nq - 1].x != p.x || q[nq - 1].y != p.y) q[nq++] = p;
             u = d[a].to;
@@ -301,10 +307,17 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
     for (uint32_t e = 0; e < P->n; e++) {
         size_t hi = lo;
         while (hi < m && d[hi].face == e) hi++;
-        if (!walk_loops(S, d, lo, hi, e, USED, q, qs, &nl, &bad)) {
+        double t_max0;
+        if (!walk_loops(S, d, lo, hi, e, USED, q, qs, &nl, &bad, &t_max0)) {
             st = WK_FAIL(R, WK_EINVALID, name, 0,
                          "validate (pslg d): the face of edge %u is not closed at node %u", e, bad);
             goto done;
+        }
+        /* an edge swept at t = 0 by the collinear rule: its face is empty,
+        ** a loop of arcs at t = 0 along it (as validate.c allows) */
+        if (nl == 1 && t_max0 <= tol_t) {
+            lo = hi;
+            continue;
         }
         /* (e) */
         if (!loops_simple_disjoint(q, qs, nl, tol, &la, &lb)) {
@@ -343,7 +356,8 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                      "validate (pslg f): no cap: a PSLG's outer wavefront never vanishes");
         goto done;
     }
-    if (!walk_loops(S, d, lo, m, WK_NONE, USED, q, qs, &nl, &bad)) {
+    double t_unused;
+    if (!walk_loops(S, d, lo, m, WK_NONE, USED, q, qs, &nl, &bad, &t_unused)) {
         st = WK_FAIL(R, WK_EINVALID, name, 0, "validate (pslg f): the cap is not closed at node %u", bad);
         goto done;
     }

@@ -162,11 +162,22 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     if (rate >= -WK_APPROACH_REL * (L->w + fabs(V->vel.x) + fabs(V->vel.y))) return;
     /* A PSLG's initial wavefront touches itself: the two sides of a segment
     ** and the corners around a node start on each other's lines.  A vertex
-    ** of the initial wavefront that starts on (or behind) the piece's line
-    ** and moves behind it can meet that line only at t = 0, where a valid
-    ** PSLG has no contact but these (its edges do not cross or touch): no
-    ** split.  (Its distance from the line is linear in t.) */
-    if (W->P->pslg && V->t0 == 0 && wk_offset_distance(L, V->p0, 0) <= W->eps_d) return;
+    ** of the initial wavefront on (or behind) the line of an edge at its
+    ** own node, moving behind it, can meet that line only at t = 0, where
+    ** the edges around a node of a valid PSLG do not touch: no split (its
+    ** distance from the line is linear in t).  Only edges at its own node:
+    ** a node merely near another edge (2e-15 away, within eps_d) is a
+    ** contact that the split resolves at once. */
+    if (W->P->pslg && V->t0 == 0 && wk_offset_distance(L, V->p0, 0) <= W->eps_d) {
+        /* at its own node: where it starts is an end of the piece's edge (a
+        ** corner, or a vertex the collinear rule made there at t = 0) */
+        const wk_polygon *P = W->P;
+        wk_point e0 = P->p[A->eout], e1 = P->p[wk_polygon_next(P, A->eout)];
+        e0 = (wk_point){e0.x - W->origin.x, e0.y - W->origin.y};
+        e1 = (wk_point){e1.x - W->origin.x, e1.y - W->origin.y};
+        double r2 = W->eps_d * W->eps_d;
+        if (wf_dist2(V->p0, e0) <= r2 || wf_dist2(V->p0, e1) <= r2) return;
+    }
     wk_point pv = wk_wf_pos(V, W->t_now);
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
@@ -425,6 +436,8 @@ static wk_status simulate(wk_wavefront *W) {
         if (schedule(W, i) != WK_OK) return R->err.code;
     }
     uint64_t same_time = 0;
+    double stop = P->pslg ? wf_event_limit(W) : INFINITY;
+    bool pslg_default = P->pslg && !(R->opt.until > 0), stop_final = false;
     for (;;) {
         /* the finder's own events (e.g. 000's start and switch events) go first when
         ** they are not later than the next wavefront event */
@@ -438,8 +451,15 @@ static wk_status simulate(wk_wavefront *W) {
             }
         }
         if (!W->Q.size) break;
-        /* a PSLG's horizon: events after it are not part of the skeleton */
-        if (P->pslg && R->opt.until > 0 && tq > R->opt.until) break;
+        /* a PSLG's horizon: events after it are not part of the skeleton;
+        ** the default one is set after the last event before the limit, and
+        ** the events up to it still count */
+        if (tq > stop) {
+            if (!pslg_default || stop_final) break;
+            stop = wf_default_horizon(W);
+            stop_final = true;
+            if (tq > stop) break;
+        }
         uint32_t first = wk_event_queue_pop(R, &W->Q);
         double t = W->v[first].ev_t;
         if (t < W->t_now) t = W->t_now;
@@ -460,7 +480,10 @@ static wk_status simulate(wk_wavefront *W) {
     }
     /* A PSLG's outer wavefront never vanishes: what is alive at the
     ** horizon ends there (wavefront_horizon.c). */
-    if (P->pslg) return wf_close_at_horizon(W);
+    if (P->pslg)
+        return wf_close_at_horizon(W, R->opt.until > 0 ? R->opt.until
+                                      : stop_final     ? stop
+                                                       : wf_default_horizon(W));
     for (uint32_t i = 0; i < W->nv; i++)
         if (W->v[i].alive) {
             return WK_FAIL(R, WK_EALGO, P->name, 0,
@@ -493,6 +516,7 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
     W.origin = wk_polygon_centre(P);
     for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge_at(P, i, W.origin, &W.L[i]);
     if ((st = wk_skeleton_new(R, P, &W.S)) != WK_OK) goto done;
+    if (P->pslg && (st = wf_check_horizon(&W)) != WK_OK) goto done;
     st = simulate(&W);
     if (st == WK_OK) st = wk_skeleton_merge_pass_through(R, W.S);
 done:

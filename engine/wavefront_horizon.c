@@ -3,8 +3,10 @@
 ** A PSLG's skeleton is unbounded (the outer face's wavefront grows
 ** forever), so the simulation stops at a horizon T: R->opt.until (--until),
 ** or by default WK_PSLG_HORIZON_MARGIN diagonals (for the fastest edge)
-** after the last event, when every bounded wavefront component has
-** vanished and every node of the unbounded skeleton exists.
+** after the last event up to WK_PSLG_DEFAULT_EVENTS_REL diagonals over the
+** slowest weight, when every bounded wavefront component has vanished (and,
+** unless an event of the unbounded wavefront comes later still, every node
+** of the unbounded skeleton exists).
 **
 ** Invariant on return: no vertex is alive; every vertex alive at T has an
 ** arc from where it started to its node at T (faces ein, eout), a vertex
@@ -17,15 +19,35 @@
 
 #include <math.h>
 
-wk_status wf_close_at_horizon(wk_wavefront *W) {
+static double weight_min(const wk_polygon *P) {
+    double w = INFINITY;
+    for (uint32_t e = 0; e < P->n; e++) w = fmin(w, P->w[e]);
+    return w;
+}
+
+double wf_event_limit(const wk_wavefront *W) {
+    if (W->R->opt.until > 0) return W->R->opt.until;
+    return WK_PSLG_DEFAULT_EVENTS_REL * wk_polygon_scale(W->P) / weight_min(W->P);
+}
+
+wk_status wf_check_horizon(const wk_wavefront *W) {
+    double until = W->R->opt.until, bound = WK_PSLG_MAX_HORIZON_REL * wk_polygon_scale(W->P) / weight_min(W->P);
+    if (until > bound)
+        return WK_FAIL(W->R, WK_EINPUT, W->P->name, 0,
+                       "--until %g is beyond the horizon the output resolves, %g diagonals over the "
+                       "smallest weight (%g; input domain)",
+                       until, WK_PSLG_MAX_HORIZON_REL, bound);
+    return WK_OK;
+}
+
+double wf_default_horizon(const wk_wavefront *W) {
+    double wmax = 0;
+    for (uint32_t e = 0; e < W->P->n; e++) wmax = fmax(wmax, W->P->w[e]);
+    return W->t_now + WK_PSLG_HORIZON_MARGIN * wk_polygon_scale(W->P) / wmax;
+}
+
+wk_status wf_close_at_horizon(wk_wavefront *W, double T) {
     wk_run *R = W->R;
-    const wk_polygon *P = W->P;
-    double T = R->opt.until;
-    if (!(T > 0)) {
-        double wmax = 0;
-        for (uint32_t e = 0; e < P->n; e++) wmax = fmax(wmax, P->w[e]);
-        T = W->t_now + WK_PSLG_HORIZON_MARGIN * wk_polygon_scale(P) / wmax;
-    }
     /* the last group may sit up to eps_t after the horizon it was taken at */
     if (T < W->t_now) T = W->t_now;
     for (uint32_t v = 0; v < W->nv; v++) {

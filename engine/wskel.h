@@ -464,12 +464,32 @@ wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out);
 wk_status wk_polygon_read_wpoly(wk_run *R, FILE *f, const char *name, wk_polygon **out);
 wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const char *name,
                                   wk_polygon **out);
+/* Smallest distance accepted between a PSLG node and an edge not at it,
+** as a fraction of the bounding-box diagonal: above the simulation's
+** coarsest eps_d (WK_TOL_REL times WK_TOL_ESCALATE_MAX, tolerance.h), so
+** that no contact the input does not have happens at t = 0 (a "Y" whose
+** arm ended 2e-15 from a segment, below eps_d but not touching it, left
+** the wavefront without a cap).  Input domain; an input that means the
+** node to lie on the edge must say so with a node there. */
+#define WK_PSLG_MIN_CLEARANCE_REL 1e-7
 /* A PSLG's default time horizon: the last event's time plus this many
 ** bounding-box diagonals over the largest weight.  After the last event the
 ** wavefront only grows, every bounded component has vanished and the
 ** skeleton has all its nodes; the margin shows the unbounded arcs' directions
 ** (an input with no event, a single segment, still gets a positive horizon). */
 #define WK_PSLG_HORIZON_MARGIN 0.25
+/* The default run follows a PSLG's events up to this many diagonals over
+** the smallest weight: every bounded wavefront component has vanished by
+** then (a point of a bounded face is less than a diagonal from its
+** boundary, which reaches it by that distance over the smallest weight).
+** Later events of the unbounded wavefront (nearly parallel pieces that
+** shrink very slowly: a "+" whose arms are 1e-16 off perpendicular has one
+** at t = 4.5e16) are left to an explicit --until. */
+#define WK_PSLG_DEFAULT_EVENTS_REL 1.0
+/* Largest --until accepted, in diagonals over the smallest weight: beyond
+** it the nodes at the horizon are so far out that their rounding exceeds
+** the validator's tolerance (input domain). */
+#define WK_PSLG_MAX_HORIZON_REL 1e6
 /* A PSLG from arrays (engine/pslg.c): nv nodes (x, y; node_line may be
 ** NULL), ne edges src[i] - dst[i] of weight w[i] (w may be NULL: 1;
 ** edge_line may be NULL).  Validated (no isolated node, no duplicate
