@@ -514,6 +514,31 @@ static void drop_isolated(graph_buf *G) {
     G->nv = n;
 }
 
+/* Segments between integer points of a small grid, 1 or 2 units long:
+** collinear and parallel edges, equal lengths, events at one time. */
+static void integer_segments(graph_buf *G, uint64_t *seed, uint32_t m) {
+    G->nv = G->ne = 0;
+    for (uint32_t k = 0; k < 6 * m && G->ne < m; k++) {
+        int x0 = (int)(rng_next(seed) % 12), y0 = (int)(rng_next(seed) % 12);
+        int dx = (int)(rng_next(seed) % 5) - 2, dy = (int)(rng_next(seed) % 5) - 2;
+        if (dx == 0 && dy == 0) continue;
+        /* reuse an existing node at either end, so that nodes get degree > 1 */
+        uint32_t ends[2];
+        double px[2] = {x0, x0 + dx}, py[2] = {y0, y0 + dy};
+        for (int j = 0; j < 2; j++) {
+            ends[j] = WK_NONE;
+            for (uint32_t v = 0; v < G->nv; v++)
+                if (G->x[v] == px[j] && G->y[v] == py[j]) ends[j] = v;
+            if (ends[j] == WK_NONE) {
+                G->x[G->nv] = px[j];
+                G->y[G->nv] = py[j];
+                ends[j] = G->nv++;
+            }
+        }
+        try_edge(G, ends[0], ends[1]);
+    }
+}
+
 /* A regular star: k arms of one length from a centre, and with some seeds
 ** a regular k-gon around it through the arms' ends or cutting them: many
 ** events at one point and time. */
@@ -549,12 +574,13 @@ Test(pslg, generated_graphs_pass_the_validator) {
     if (getenv("WSKEL_PSLG_CASES")) n_seeds = strtoull(getenv("WSKEL_PSLG_CASES"), NULL, 10);
     for (uint64_t seed0 = 1; seed0 <= n_seeds; seed0++) {
         uint64_t seed = seed0 * 0x9E3779B97F4A7C15ull;
-        int family = (int)(seed0 % 5);
+        int family = (int)(seed0 % 6);
         if (family == 0) random_segments(&G, &seed, 4 + (uint32_t)(seed0 % 20));
         else if (family == 1) polygon_with_segments(&G, &seed, 2 + (uint32_t)(seed0 % 8));
         else if (family == 2) grid_graph(&G, &seed, 3 + (uint32_t)(seed0 % 4), 3);
         else if (family == 3) grid_graph(&G, &seed, 2 + (uint32_t)(seed0 % 5), 0);
-        else regular_star(&G, &seed, 3 + (uint32_t)(seed0 % 9));
+        else if (family == 4) regular_star(&G, &seed, 3 + (uint32_t)(seed0 % 9));
+        else integer_segments(&G, &seed, 3 + (uint32_t)(seed0 % 30));
         drop_isolated(&G);
         if (G.ne == 0) continue;
         bool weighted = (seed0 / 3) % 2 == 1;
