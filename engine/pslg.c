@@ -34,10 +34,6 @@
 ** edges that cross, touch (a node inside another edge) or overlap, no two
 ** edges at a node that leave it in directions within WK_ANTIPARALLEL_SIN
 ** (a needle: the vertex between them would be too fast, as in polygons),
-** no two edges of different weights continuing each other straight through
-** a node (within WK_PARALLEL_SIN: the collinear rule would act at t = 0 on
-** both sides of the node at once, which the group resolution mixes up: a
-** known limit, refused rather than answered wrong),
 ** no two edges without a common node closer than WK_PSLG_MIN_CLEARANCE_REL
 ** of the diagonal (below the simulation's tolerance they would touch),
 ** weights > 0 within WK_POLYGON_MAX_WEIGHT_RATIO, coordinates within the
@@ -58,7 +54,6 @@ typedef struct pslg_ctx {
     const double *x, *y;
     const uint32_t *src, *dst;
     const long *node_line, *edge_line;
-    const double *w;    /* edge weights, NULL: all 1 */
     uint32_t *deg;      /* degree of each node */
     uint32_t *first;    /* CSR: node v's half-edges out are rot[first[v] .. first[v + 1]) */
     uint32_t *rot;      /* ... sorted counter-clockwise by direction */
@@ -273,13 +268,6 @@ static wk_status build_rotation(pslg_ctx *C) {
             wk_point o = pt(C, v), p1 = pt(C, h_to(C, h1)), p2 = pt(C, h_to(C, h2));
             double ax = p1.x - o.x, ay = p1.y - o.y, bx = p2.x - o.x, by = p2.y - o.y;
             double cr = ax * by - ay * bx, dot = ax * bx + ay * by;
-            if (dot < 0 && fabs(cr) <= WK_PARALLEL_SIN * hypot(ax, ay) * hypot(bx, by) &&
-                C->w && C->w[h1 >> 1] != C->w[h2 >> 1])
-                return WK_FAIL(R, WK_EINPUT, C->name, nline(C, v),
-                               "node %u: edges %u and %u continue each other straight with different "
-                               "weights (%g, %g); the collinear rule at t = 0 on a PSLG node is not "
-                               "supported yet (input domain, see README)",
-                               v, h1 >> 1, h2 >> 1, C->w[h1 >> 1], C->w[h2 >> 1]);
             if (dot > 0 && fabs(cr) <= WK_ANTIPARALLEL_SIN * hypot(ax, ay) * hypot(bx, by))
                 return WK_FAIL(R, WK_EINPUT, C->name, nline(C, v),
                                "node %u is a needle: edges %u and %u leave it in directions closer "
@@ -381,7 +369,7 @@ wk_status wk_pslg_from_arrays(wk_run *R, uint32_t nv, const double *x, const dou
     if (ne > WK_POLYGON_MAX_N / 3)
         return WK_FAIL(R, WK_EINPUT, name, 0, "too many edges (%u; the limit is %u)", ne,
                        WK_POLYGON_MAX_N / 3);
-    pslg_ctx C = {R, name, nv, ne, x, y, src, dst, node_line, edge_line, w, NULL, NULL, NULL, NULL, NULL};
+    pslg_ctx C = {R, name, nv, ne, x, y, src, dst, node_line, edge_line, NULL, NULL, NULL, NULL, NULL};
     uint32_t big = nv > 2 * ne ? nv : 2 * ne;
     C.deg = WK_NEW_ARRAY(R, uint32_t, nv);
     C.first = WK_NEW_ARRAY(R, uint32_t, (size_t)nv + 1);

@@ -161,23 +161,13 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
     if (rate >= -WK_APPROACH_REL * (L->w + fabs(V->vel.x) + fabs(V->vel.y))) return;
     /* A PSLG's initial wavefront touches itself: the two sides of a segment
-    ** and the corners around a node start on each other's lines.  A vertex
-    ** of the initial wavefront on (or behind) the line of an edge at its
-    ** own node, moving behind it, can meet that line only at t = 0, where
-    ** the edges around a node of a valid PSLG do not touch: no split (its
-    ** distance from the line is linear in t).  Only edges at its own node:
-    ** a node merely near another edge (2e-15 away, within eps_d) is a
-    ** contact that the split resolves at once. */
-    if (W->P->pslg && V->t0 == 0 && wk_offset_distance(L, V->p0, 0) <= W->eps_d) {
-        /* at its own node: where it starts is an end of the piece's edge (a
-        ** corner, or a vertex the collinear rule made there at t = 0) */
-        const wk_polygon *P = W->P;
-        wk_point e0 = P->p[A->eout], e1 = P->p[wk_polygon_next(P, A->eout)];
-        e0 = (wk_point){e0.x - W->origin.x, e0.y - W->origin.y};
-        e1 = (wk_point){e1.x - W->origin.x, e1.y - W->origin.y};
-        double r2 = W->eps_d * W->eps_d;
-        if (wf_dist2(V->p0, e0) <= r2 || wf_dist2(V->p0, e1) <= r2) return;
-    }
+    ** and the corners around a node start on each other's lines (and on
+    ** the pieces the collinear rule extends at t = 0).  A vertex born at
+    ** t = 0 on (or behind) the piece's line and moving behind it can meet
+    ** that line only at t = 0 (its distance is linear in t), where a valid
+    ** PSLG has no contact but these: its nodes keep WK_PSLG_MIN_CLEARANCE_REL
+    ** (above eps_d) from the edges not at them.  No split. */
+    if (W->P->pslg && V->t0 == 0 && wk_offset_distance(L, V->p0, 0) <= W->eps_d) return;
     wk_point pv = wk_wf_pos(V, W->t_now);
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
