@@ -316,11 +316,12 @@ int main(int argc, char **argv) {
     }
     if (until > 0 && !P->pslg)
         fprintf(stderr, "wskel: note: --until only affects PSLG input (a polygon's wavefront vanishes)\n");
-    if (P->pslg && (offsets_arg || (strcmp(format, "json") && strcmp(format, "text")))) {
-        /* the others draw or cut the polygon's region, which a PSLG does
-        ** not have, or do not write a cap (the wavefront at the horizon) */
+    if (P->pslg && (offsets_arg || !strcmp(format, "svg") || !strcmp(format, "obj") ||
+                    !strcmp(format, "vtp"))) {
+        /* these draw, cut or roof the polygon's region, which a PSLG does
+        ** not have */
         WK_FAIL(&R, WK_EUNSUPPORTED, P->name, 0,
-                "a PSLG's skeleton is written as json or text only so far (not %s%s)",
+                "a PSLG's skeleton is written as json, text, geojson or wkt only so far (not %s%s)",
                 offsets_arg ? "--offset" : "--format ", offsets_arg ? "" : format);
         rc = report(&R, verbose);
         goto done;

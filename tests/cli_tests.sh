@@ -417,15 +417,19 @@ for v in arrangement monotone motorcycle deforming; do
   expect "pslg: --variant $v refuses (exit 2)" 2 "does not take PSLG input"
   [ ! -e "$TMP/refused.json" ] && pass "pslg: --variant $v leaves no file" || fail "pslg: --variant $v leaves no file" ""
 done
-for fmt in svg obj vtp geojson wkt; do
+for fmt in svg obj vtp; do
   run "$WSKEL" --format "$fmt" -o "$TMP/pslg.$fmt" "$PSLG/plus.graphml"
-  expect "pslg: --format $fmt refused (exit 2)" 2 "json or text only"
+  expect "pslg: --format $fmt refused (exit 2)" 2 "json, text, geojson or wkt only"
   [ ! -e "$TMP/pslg.$fmt" ] && pass "pslg: --format $fmt leaves no file" || fail "pslg: --format $fmt leaves no file" ""
 done
 run "$WSKEL" --offset 0.5 --format geojson "$PSLG/plus.graphml"
-expect "pslg: --offset refused (exit 2)" 2 "json or text only"
-run "$WSKEL" --format text "$PSLG/plus.graphml"
-expect "pslg: --format text exits 0" 0
+expect "pslg: --offset refused (exit 2)" 2 "json, text, geojson or wkt only"
+for fmt in text wkt geojson; do
+  run "$WSKEL" --format "$fmt" "$PSLG/plus.graphml"
+  expect "pslg: --format $fmt exits 0" 0
+done
+caps=$("$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); print(sum(f["properties"]["left"] == -1 for f in d["features"]))' "$OUT" 2>/dev/null)
+[ "$caps" = 12 ] && pass "pslg: geojson has the 12 cap arcs of the +" || fail "pslg: geojson has the 12 cap arcs of the +" "got '$caps'"
 run "$WSKEL" --until 0 "$PSLG/plus.graphml"
 expect "pslg: --until 0 is a usage error" 64 "--until must be a positive number"
 run "$WSKEL" --until 1e300 "$PSLG/plus.graphml"
