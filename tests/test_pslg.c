@@ -328,6 +328,28 @@ Test(pslg, square_with_a_dangling_edge_inside) {
     release(&R, P, S);
 }
 
+Test(pslg, bent_path_has_no_event) {
+    /* the path (0,0)-(2,0)-(2,2): every corner is convex inside the bend or
+    ** reflex outside, pieces keep their lengths, no event; the wavefront at
+    ** the default horizon T = 0.25 * 2 sqrt(2) is the hexagon below */
+    double x[3] = {0, 2, 2}, y[3] = {0, 0, 2};
+    uint32_t s[2] = {0, 1}, d[2] = {1, 2};
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P;
+    wk_skeleton *S;
+    expect_ok(&R, solve_pslg(&R, 3, x, y, 2, s, d, NULL, 0, &P, &S));
+    double T = WK_PSLG_HORIZON_MARGIN * sqrt(8.0);
+    cr_assert_float_eq(S->horizon, T, 1e-12);
+    cr_assert_eq(counter(&R, "edge_events") + counter(&R, "split_events"), 0);
+    double ex[6][2] = {{-T, T}, {2 - T, T}, {2 - T, 2 + T}, {2 + T, 2 + T}, {2 + T, -T}, {-T, -T}};
+    for (int i = 0; i < 6; i++)
+        cr_assert_neq(find_node(S, ex[i][0], ex[i][1], T, 1e-12), WK_NONE, "no node at (%g, %g)",
+                      ex[i][0], ex[i][1]);
+    cr_assert_eq(nodes_at(S, T, 1e-12), 6);
+    release(&R, P, S);
+}
+
 Test(pslg, tree) {
     /* a tree of 7 nodes with a degree-3 node and a bend */
     double x[7] = {0, 4, 4, 8, 6, -3, 1}, y[7] = {0, 0, 4, 0, 7, 2, -5};
