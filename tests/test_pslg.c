@@ -738,3 +738,64 @@ Test(pslg, graphml_polygon_stays_a_polygon_unless_asked) {
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
 }
+
+/* ---- a polygon as a PSLG: inside, the polygon's skeleton */
+
+/* Every node of the polygon's skeleton (t > 0) is a node of the PSLG's,
+** whose inside face cycles run the same wavefront: the faces of a PSLG are
+** separated by its edges, so the outside cannot change the inside.  Over
+** every generator family, unit and random weights, with holes too. */
+Test(pslg, polygon_inside_equals_the_polygon_skeleton) {
+    static const char *families[] = {"star", "comb", "spiral", "notched", "crossing", "random",
+                                     "monotone", "rectilinear", "convex", "holes", "coastline"};
+    uint32_t compared = 0, nodes = 0;
+    for (size_t f = 0; f < sizeof families / sizeof *families; f++)
+        for (uint64_t seed = 1; seed <= (quick() ? 2 : 4); seed++)
+            for (int weighted = 0; weighted < 2; weighted++) {
+                wk_run R;
+                wk_run_init(&R);
+                wk_polygon *Q = NULL;
+                uint32_t n = 40 + 8 * (uint32_t)seed;
+                wk_status gs = !strcmp(families[f], "holes")
+                                   ? gen_holes(&R, "holes", n, -1, 2, seed, weighted ? "uniform" : NULL, &Q)
+                                   : gen(&R, families[f], n, -1, seed, weighted ? "uniform" : NULL, &Q);
+                cr_assert_eq(gs, WK_OK, "%s seed %llu", families[f], (unsigned long long)seed);
+                wk_skeleton *SQ = NULL;
+                expect_ok(&R, wk_solve(&R, wk_variant_reference(), Q, &SQ, NULL, NULL));
+                /* the PSLG: the polygon's stored vertices and edges */
+                uint32_t *s = malloc(Q->n * sizeof *s), *d = malloc(Q->n * sizeof *d);
+                double *x = malloc(Q->n * sizeof *x), *y = malloc(Q->n * sizeof *y);
+                cr_assert(s && d && x && y);
+                for (uint32_t i = 0; i < Q->n; i++) {
+                    x[i] = Q->p[i].x;
+                    y[i] = Q->p[i].y;
+                    s[i] = i;
+                    d[i] = wk_polygon_next(Q, i);
+                }
+                wk_polygon *P;
+                wk_skeleton *S;
+                wk_status st = solve_pslg(&R, Q->n, x, y, Q->n, s, d, Q->w, 0, &P, &S);
+                char msg[1024];
+                err_text(&R, msg, sizeof msg);
+                cr_assert_eq(st, WK_OK, "%s seed %llu weighted %d: %s", families[f],
+                             (unsigned long long)seed, weighted, msg);
+                double eps = 1e-9 * wk_polygon_scale(Q);
+                for (uint32_t i = Q->n; i < SQ->n_nodes; i++) {
+                    const wk_node *v = &SQ->nodes[i];
+                    cr_assert_neq(find_node(S, v->x, v->y, v->t, eps), WK_NONE,
+                                  "%s seed %llu weighted %d: the polygon's node %u (%.17g, %.17g, "
+                                  "t %.17g) is not in the PSLG's skeleton",
+                                  families[f], (unsigned long long)seed, weighted, i, v->x, v->y,
+                                  v->t);
+                    nodes++;
+                }
+                compared++;
+                free(s), free(d), free(x), free(y);
+                wk_skeleton_free(&R, SQ);
+                wk_polygon_free(&R, Q);
+                release(&R, P, S);
+            }
+    cr_log_info("pslg: %u polygons' skeletons found inside their PSLGs (%u nodes)", compared, nodes);
+    cr_assert_geq(compared, 40, "only %u compared", compared);
+    cr_assert_gt(nodes, 20 * compared, "only %u nodes compared", nodes);
+}
