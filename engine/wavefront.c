@@ -21,6 +21,12 @@
 ** vertex of the touched cycles: in full when its target piece disappeared
 ** (or the vertex is new), incrementally (new pieces only) otherwise.
 **
+** PSLGs (wk_polygon.pslg, engine/pslg.c): the rings are the face cycles of
+** the graph's half-edges, so the same model runs; the initial wavefront
+** touches itself (both sides of a segment, the corners at a node), which
+** wk_wf_split_test does not take for splits, and the run ends at a time
+** horizon (wavefront_horizon.c) instead of when the wavefront has vanished.
+**
 ** Tolerances: WK_TOL_REL times the polygon's scale for distances, divided by
 ** the largest weight for times (wskel.h).
 */
