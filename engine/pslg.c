@@ -117,6 +117,7 @@ static bool angle_less(const pslg_ctx *C, uint32_t h1, uint32_t h2) {
 static wk_status check_values(pslg_ctx *C, const double *w, double *diag_out) {
     wk_run *R = C->R;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, big = 0;
+    uint32_t far = 0;
     for (uint32_t v = 0; v < C->nv; v++) {
         double c[2] = {C->x[v], C->y[v]};
         for (int k = 0; k < 2; k++) {
@@ -134,16 +135,20 @@ static wk_status check_values(pslg_ctx *C, const double *w, double *diag_out) {
                                v, c[k], WK_POLYGON_MIN_COORD);
             lo[k] = fmin(lo[k], c[k]);
             hi[k] = fmax(hi[k], c[k]);
-            big = fmax(big, fabs(c[k]));
+            if (fabs(c[k]) > big) {
+                big = fabs(c[k]);
+                far = v;
+            }
         }
     }
     double diag = hypot(hi[0] - lo[0], hi[1] - lo[1]);
     *diag_out = diag;
-    if (big > WK_POLYGON_MAX_OFFSET_REL * diag)
-        return WK_FAIL(R, WK_EINPUT, C->name, 0,
-                       "the graph lies %.3g diagonals from the origin, beyond the %g the output "
-                       "resolves (input domain): translate it nearer the origin",
-                       big / diag, WK_POLYGON_MAX_OFFSET_REL);
+    /* (diag 0: every node at one point, which check_nodes refuses) */
+    if (diag > 0 && big > WK_POLYGON_MAX_OFFSET_REL * diag)
+        return WK_FAIL(R, WK_EINPUT, C->name, nline(C, far),
+                       "node %u lies %.3g diagonals from the origin, beyond the %g the output "
+                       "resolves (input domain): translate the graph nearer the origin",
+                       far, big / diag, WK_POLYGON_MAX_OFFSET_REL);
     uint32_t wlo = 0, whi = 0;
     for (uint32_t e = 0; e < C->ne; e++) {
         double we = w ? w[e] : 1.0;

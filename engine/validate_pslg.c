@@ -247,7 +247,6 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                            i, v->x, v->y, v->t, T);
     }
     /* (c) */
-    uint32_t n_cap = 0;
     for (uint32_t i = 0; i < S->n_arcs; i++) {
         const wk_arc *c = &S->arcs[i];
         if (c->a >= S->n_nodes || c->b >= S->n_nodes || c->a == c->b)
@@ -259,7 +258,6 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                            "left)",
                            i, c->left, c->right, WK_NONE);
         bool cap = c->left == WK_NONE;
-        n_cap += cap;
         uint32_t ends[2] = {c->a, c->b}, sides[2] = {c->left, c->right};
         for (int j = 0; j < 2; j++) {
             const wk_node *v = &S->nodes[ends[j]];
