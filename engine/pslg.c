@@ -35,7 +35,8 @@
 ** edges at a node that leave it in directions within WK_ANTIPARALLEL_SIN
 ** (a needle: the vertex between them would be too fast, as in polygons),
 ** no two edges without a common node closer than WK_PSLG_MIN_CLEARANCE_REL
-** of the diagonal (below the simulation's tolerance they would touch),
+** of the diagonal (below the simulation's tolerance they would touch; nodes
+** joined by a shorter edge count as one node for this),
 ** weights > 0 within WK_POLYGON_MAX_WEIGHT_RATIO, coordinates within the
 ** polygon input domain (README).  Edge pairs are tested exactly
 ** (wk_segments_meet) over the pairs whose x ranges overlap: O(m log m +
@@ -201,11 +202,31 @@ static double point_segment_distance(wk_point p, wk_point a, wk_point b) {
     return hypot(p.x - a.x - s * dx, p.y - a.y - s * dy);
 }
 
+/* Union-find over the nodes (C->first as parents: it is filled only later,
+** by build_rotation). */
+static uint32_t uf_find(uint32_t *parent, uint32_t v) {
+    while (parent[v] != v) {
+        parent[v] = parent[parent[v]];
+        v = parent[v];
+    }
+    return v;
+}
+
 /* Edges: pairs whose x ranges come within the clearance, tested exactly
 ** for contact, then (disjoint pairs without a shared node) for the
-** clearance (in doubles: a bound, not a decision the skeleton hinges on). */
+** clearance (in doubles: a bound, not a decision the skeleton hinges on).
+** Nodes joined by edges shorter than the clearance count as one node there
+** (an edge below the tolerance collapses at t ~ 0, as in polygons, and the
+** edges on either side of it become neighbours). */
 static wk_status check_edges(pslg_ctx *C, uint32_t *order, double clearance) {
     wk_run *R = C->R;
+    uint32_t *parent = C->first;
+    for (uint32_t v = 0; v < C->nv; v++) parent[v] = v;
+    for (uint32_t e = 0; e < C->ne; e++) {
+        wk_point a = pt(C, C->src[e]), b = pt(C, C->dst[e]);
+        if (hypot(b.x - a.x, b.y - a.y) < clearance)
+            parent[uf_find(parent, C->src[e])] = uf_find(parent, C->dst[e]);
+    }
     for (uint32_t e = 0; e < C->ne; e++) order[e] = e;
     merge_sort(C, order, C->tmp, C->ne, edge_less);
     for (uint32_t i = 0; i < C->ne; i++) {
@@ -228,7 +249,10 @@ static wk_status check_edges(pslg_ctx *C, uint32_t *order, double clearance) {
             uint32_t exact = 0;
             wk_seg_meet m = wk_segments_meet_ex(a0, a1, b0, b1, &exact);
             if (exact) wk_count(R, WK_COUNTER_exact_fallbacks, exact);
-            if (m == WK_SEG_DISJOINT && shared == 0) {
+            uint32_t ra0 = uf_find(parent, C->src[a]), ra1 = uf_find(parent, C->dst[a]),
+                     rb0 = uf_find(parent, C->src[b]), rb1 = uf_find(parent, C->dst[b]);
+            bool near_shared = ra0 == rb0 || ra0 == rb1 || ra1 == rb0 || ra1 == rb1;
+            if (m == WK_SEG_DISJOINT && shared == 0 && !near_shared) {
                 double dist = fmin(fmin(point_segment_distance(a0, b0, b1), point_segment_distance(a1, b0, b1)),
                                    fmin(point_segment_distance(b0, a0, a1), point_segment_distance(b1, a0, a1)));
                 if (dist < clearance)

@@ -469,8 +469,10 @@ wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const 
 ** coarsest eps_d (WK_TOL_REL times WK_TOL_ESCALATE_MAX, tolerance.h), so
 ** that no contact the input does not have happens at t = 0 (a "Y" whose
 ** arm ended 2e-15 from a segment, below eps_d but not touching it, left
-** the wavefront without a cap).  Input domain; an input that means the
-** node to lie on the edge must say so with a node there. */
+** the wavefront without a cap).  Nodes joined by edges shorter than it
+** count as one node (an edge below the tolerance collapses at once, as in
+** polygons).  Input domain; an input that means the node to lie on the
+** edge must say so with a node there. */
 #define WK_PSLG_MIN_CLEARANCE_REL 1e-7
 /* A PSLG's default time horizon: the last event's time plus this many
 ** bounding-box diagonals over the largest weight.  After the last event the

@@ -799,3 +799,65 @@ Test(pslg, polygon_inside_equals_the_polygon_skeleton) {
     cr_assert_geq(compared, 40, "only %u compared", compared);
     cr_assert_gt(nodes, 20 * compared, "only %u nodes compared", nodes);
 }
+
+/* Degenerate polygons (tests/data/degenerate: edges of an ulp, 1e-16 off
+** straight, far from the origin) read as PSLGs: valid skeletons that hold
+** the polygon's nodes (within 1e-7 of the diagonal); the nodes joined by a
+** sub-tolerance edge count as one for the clearance bound. */
+Test(pslg, degenerate_polygons_as_pslgs) {
+    static const char *files[] = {"tiny_edge_n48.wpoly", "ulp_edge_n10.wpoly", "reg16_tiny.wpoly",
+                                  "arr_chamfer_contact.wpoly", "mono_tiny_edge_collinear.wpoly",
+                                  "reg64_far.wpoly", "arr_ray_at_origin.wpoly",
+                                  "collinear_same_direction.wpoly", "flat_fold_weighted.wpoly"};
+    for (size_t f = 0; f < sizeof files / sizeof *files; f++) {
+        wk_run R;
+        wk_run_init(&R);
+        char path[512], rel[256];
+        snprintf(rel, sizeof rel, "degenerate/%s", files[f]);
+        data_path(path, sizeof path, rel);
+        wk_polygon *Q = NULL;
+        expect_ok(&R, wk_polygon_read_file(&R, path, &Q));
+        wk_skeleton *SQ = NULL;
+        expect_ok(&R, wk_solve(&R, wk_variant_reference(), Q, &SQ, NULL, NULL));
+        uint32_t *s = malloc(Q->n * sizeof *s), *d = malloc(Q->n * sizeof *d);
+        double *x = malloc(Q->n * sizeof *x), *y = malloc(Q->n * sizeof *y);
+        cr_assert(s && d && x && y);
+        for (uint32_t i = 0; i < Q->n; i++) {
+            x[i] = Q->p[i].x;
+            y[i] = Q->p[i].y;
+            s[i] = i;
+            d[i] = wk_polygon_next(Q, i);
+        }
+        /* as the command line solves: wk_solve_checked, which retries with
+        ** coarser tolerances (reg64_far, a unit 64-gon 4e9 from a far vertex,
+        ** needs 4 retries as a PSLG: at the first tolerance its whole outer
+        ** wavefront was taken to vanish at t = 0) */
+        wk_polygon *P = NULL;
+        wk_skeleton *S = NULL;
+        wk_status st = wk_pslg_from_arrays(&R, Q->n, x, y, Q->n, s, d, Q->w, "pslg", NULL, NULL, &P);
+        if (st == WK_OK)
+            st = wk_solve_checked(&R, wk_variant_reference(), P, 0, &S, NULL, NULL, NULL);
+        char msg[1024];
+        err_text(&R, msg, sizeof msg);
+        cr_assert_eq(st, WK_OK, "%s: %s", files[f], msg);
+        double eps = 1e-7 * wk_polygon_scale(Q);
+        uint32_t missing = 0;
+        for (uint32_t i = Q->n; i < SQ->n_nodes; i++) {
+            const wk_node *v = &SQ->nodes[i];
+            missing += find_node(S, v->x, v->y, v->t, eps) == WK_NONE;
+        }
+        /* arr_chamfer_contact: a chamfer of 9.5e-12 at a reflex corner; the
+        ** polygon run splits its vertices at once on the pieces across it
+        ** (within eps_d), the PSLG run, whose vertices born at t = 0 do not
+        ** split pieces whose lines they start on, grows the chamfer into a
+        ** face (CGAL's exact answer): two valid skeletons that differ below
+        ** the tolerance's consequences (see the file's comment) */
+        bool exact_answer_differs = !strcmp(files[f], "arr_chamfer_contact.wpoly");
+        if (exact_answer_differs) cr_assert_gt(missing, 0, "%s: now the same skeleton", files[f]);
+        else cr_assert_eq(missing, 0, "%s: %u of the polygon's nodes missing", files[f], missing);
+        free(s), free(d), free(x), free(y);
+        wk_skeleton_free(&R, SQ);
+        wk_polygon_free(&R, Q);
+        release(&R, P, S);
+    }
+}
