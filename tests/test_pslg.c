@@ -763,8 +763,8 @@ Test(pslg, polygon_inside_equals_the_polygon_skeleton) {
                 wk_skeleton *SQ = NULL;
                 expect_ok(&R, wk_solve(&R, wk_variant_reference(), Q, &SQ, NULL, NULL));
                 /* the PSLG: the polygon's stored vertices and edges */
-                uint32_t *s = malloc(Q->n * sizeof *s), *d = malloc(Q->n * sizeof *d);
-                double *x = malloc(Q->n * sizeof *x), *y = malloc(Q->n * sizeof *y);
+                uint32_t *s = WK_NEW_ARRAY(&R, uint32_t, Q->n), *d = WK_NEW_ARRAY(&R, uint32_t, Q->n);
+                double *x = WK_NEW_ARRAY(&R, double, Q->n), *y = WK_NEW_ARRAY(&R, double, Q->n);
                 cr_assert(s && d && x && y);
                 for (uint32_t i = 0; i < Q->n; i++) {
                     x[i] = Q->p[i].x;
@@ -790,7 +790,10 @@ Test(pslg, polygon_inside_equals_the_polygon_skeleton) {
                     nodes++;
                 }
                 compared++;
-                free(s), free(d), free(x), free(y);
+                WK_FREE_ARRAY(&R, s, Q->n);
+                WK_FREE_ARRAY(&R, d, Q->n);
+                WK_FREE_ARRAY(&R, x, Q->n);
+                WK_FREE_ARRAY(&R, y, Q->n);
                 wk_skeleton_free(&R, SQ);
                 wk_polygon_free(&R, Q);
                 release(&R, P, S);
@@ -819,8 +822,8 @@ Test(pslg, degenerate_polygons_as_pslgs) {
         expect_ok(&R, wk_polygon_read_file(&R, path, &Q));
         wk_skeleton *SQ = NULL;
         expect_ok(&R, wk_solve(&R, wk_variant_reference(), Q, &SQ, NULL, NULL));
-        uint32_t *s = malloc(Q->n * sizeof *s), *d = malloc(Q->n * sizeof *d);
-        double *x = malloc(Q->n * sizeof *x), *y = malloc(Q->n * sizeof *y);
+        uint32_t *s = WK_NEW_ARRAY(&R, uint32_t, Q->n), *d = WK_NEW_ARRAY(&R, uint32_t, Q->n);
+        double *x = WK_NEW_ARRAY(&R, double, Q->n), *y = WK_NEW_ARRAY(&R, double, Q->n);
         cr_assert(s && d && x && y);
         for (uint32_t i = 0; i < Q->n; i++) {
             x[i] = Q->p[i].x;
@@ -855,7 +858,10 @@ Test(pslg, degenerate_polygons_as_pslgs) {
         bool exact_answer_differs = !strcmp(files[f], "arr_chamfer_contact.wpoly");
         if (exact_answer_differs) cr_assert_gt(missing, 0, "%s: now the same skeleton", files[f]);
         else cr_assert_eq(missing, 0, "%s: %u of the polygon's nodes missing", files[f], missing);
-        free(s), free(d), free(x), free(y);
+        WK_FREE_ARRAY(&R, s, Q->n);
+        WK_FREE_ARRAY(&R, d, Q->n);
+        WK_FREE_ARRAY(&R, x, Q->n);
+        WK_FREE_ARRAY(&R, y, Q->n);
         wk_skeleton_free(&R, SQ);
         wk_polygon_free(&R, Q);
         release(&R, P, S);
