@@ -50,6 +50,15 @@ wk_status wf_close_at_horizon(wk_wavefront *W, double T) {
     wk_run *R = W->R;
     /* the last group may sit up to eps_t after the horizon it was taken at */
     if (T < W->t_now) T = W->t_now;
+    /* The outer face's wavefront grows forever: if nothing is alive, a group
+    ** resolved a feature at the tolerance wrongly (a unit 64-gon next to a
+    ** vertex 4e9 away, at the first tolerance); no skeleton, so that
+    ** wk_solve_checked retries and --no-check writes nothing wrong. */
+    uint32_t alive = 0;
+    for (uint32_t v = 0; v < W->nv; v++) alive += W->v[v].alive;
+    if (alive == 0)
+        return WK_FAIL(R, WK_EALGO, W->P->name, 0,
+                       "wavefront: the PSLG's unbounded wavefront vanished by t = %.17g", W->t_now);
     for (uint32_t v = 0; v < W->nv; v++) {
         wk_wf_vertex *V = &W->v[v];
         if (!V->alive) continue;
