@@ -27,6 +27,9 @@ static const char usage_text[] =
     "reads stdin.  GeoJSON: a Polygon, MultiPolygon, Feature or FeatureCollection;\n"
     "per-edge weights from a Feature's \"weights\" property (one array per ring,\n"
     "weight i for the edge from vertex i to the next).  WKT: POLYGON or MULTIPOLYGON.\n"
+    "  GraphML: disjoint simple cycles are a polygon; any other planar\n"
+    "  straight-line graph (or any graph with --pslg) is a PSLG, whose skeleton\n"
+    "  (naive only) is followed up to a horizon (--until).\n"
     "  .wpoly: '#' comment lines; first line n; then n lines 'x y [w]' where w\n"
     "  (default 1) weights the edge from this vertex to the next.  Holes follow\n"
     "  as further rings, each its own count line and vertex lines.  Any ring may\n"
@@ -61,6 +64,12 @@ static const char usage_text[] =
     "                     wall (0), above 90 an overhang (< 0)\n"
     "  --height H         stop at t = H and close the roof with a cap at t = H\n"
     "                     (deforming; required when a weight is <= 0)\n"
+    "  --until T          PSLG input: follow the wavefront up to t = T; the arcs\n"
+    "                     still alive end at nodes at t = T, the wavefront there is\n"
+    "                     the cap (default: 0.25 diagonals / the largest weight\n"
+    "                     after the last event)\n"
+    "  --pslg             GraphML: read disjoint simple cycles as a PSLG (both\n"
+    "                     sides of every edge) rather than a polygon\n"
     "  --step S           variants that advance in time steps (deforming): the\n"
     "                     first increment times S (default 1); the skeleton\n"
     "                     does not depend on it\n"
@@ -128,7 +137,8 @@ int main(int argc, char **argv) {
     uint32_t part = WK_NONE;
     double step_scale = 1;
     double height = 0;
-    bool angles = false;
+    double until = 0;
+    bool angles = false, pslg = false;
 
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -228,6 +238,16 @@ int main(int argc, char **argv) {
             if (end == v || *end || !(x > 0) || !isfinite(x))
                 return usage_error("--height must be a positive number (got '%s')", v);
             height = x;
+        } else if (!strcmp(a, "--until")) {
+            NEED_ARG();
+            const char *v = argv[++i];
+            char *end;
+            double x = strtod(v, &end);
+            if (end == v || *end || !(x > 0) || !isfinite(x))
+                return usage_error("--until must be a positive number (got '%s')", v);
+            until = x;
+        } else if (!strcmp(a, "--pslg")) {
+            pslg = true;
         } else if (!strcmp(a, "--step")) {
             NEED_ARG();
             const char *v = argv[++i];
@@ -270,6 +290,8 @@ int main(int argc, char **argv) {
     R.opt.threads = threads;
     R.opt.step_scale = step_scale;
     R.opt.height = height;
+    R.opt.until = until;
+    R.opt.pslg = pslg;
     R.opt.angles = angles;
     /* weights <= 0 are input only for a variant that takes them: the
     ** readers refuse them otherwise, naming the edge */
@@ -289,6 +311,18 @@ int main(int argc, char **argv) {
     double offset_s = -1; /* time of the wk_offset calls (--stats), < 0: none */
 
     if (wk_polygon_read_file(&R, input, &P) != WK_OK) {
+        rc = report(&R, verbose);
+        goto done;
+    }
+    if (until > 0 && !P->pslg)
+        fprintf(stderr, "wskel: note: --until only affects PSLG input (a polygon's wavefront vanishes)\n");
+    if (P->pslg && (offsets_arg || !strcmp(format, "svg") || !strcmp(format, "obj") ||
+                    !strcmp(format, "vtp"))) {
+        /* these draw, cut or roof the polygon's region, which a PSLG does
+        ** not have */
+        WK_FAIL(&R, WK_EUNSUPPORTED, P->name, 0,
+                "a PSLG's skeleton is written as json, text, geojson or wkt only so far (not %s%s)",
+                offsets_arg ? "--offset" : "--format ", offsets_arg ? "" : format);
         rc = report(&R, verbose);
         goto done;
     }

@@ -31,13 +31,15 @@ void wk_offset_line_of_points(wk_point a, wk_point b, double w, wk_offset_line *
 }
 
 void wk_offset_line_of_edge_at(const wk_polygon *P, uint32_t e, wk_point o, wk_offset_line *L) {
-    wk_point a = P->p[e], b = P->p[wk_polygon_next(P, e)];
-    line_from(b.x - a.x, b.y - a.y, 0.5 * ((a.x - o.x) + (b.x - o.x)), 0.5 * ((a.y - o.y) + (b.y - o.y)),
+    /* wk_polygon_edge_dir: a PSLG's cap has length 0 and a stored direction */
+    wk_point a = P->p[e], b = P->p[wk_polygon_next(P, e)], d = wk_polygon_edge_dir(P, e);
+    line_from(d.x, d.y, 0.5 * ((a.x - o.x) + (b.x - o.x)), 0.5 * ((a.y - o.y) + (b.y - o.y)),
               P->w[e], L);
 }
 
 void wk_offset_line_of_edge(const wk_polygon *P, uint32_t e, wk_offset_line *L) {
-    wk_offset_line_of_points(P->p[e], P->p[wk_polygon_next(P, e)], P->w[e], L);
+    wk_point a = P->p[e], b = P->p[wk_polygon_next(P, e)], d = wk_polygon_edge_dir(P, e);
+    line_from(d.x, d.y, 0.5 * (a.x + b.x), 0.5 * (a.y + b.y), P->w[e], L);
 }
 
 wk_point wk_polygon_centre(const wk_polygon *P) {

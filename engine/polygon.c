@@ -857,6 +857,9 @@ void wk_polygon_free(wk_run *R, wk_polygon *P) {
     WK_FREE_ARRAY(R, P->input_index, P->n);
     if (P->ring_start) WK_FREE_ARRAY(R, P->ring_start, (size_t)P->n_rings + 1);
     if (P->ring_of) WK_FREE_ARRAY(R, P->ring_of, P->n);
+    if (P->dir) WK_FREE_ARRAY(R, P->dir, P->n);
+    if (P->corner_vertex) WK_FREE_ARRAY(R, P->corner_vertex, P->n);
+    if (P->edge_of) WK_FREE_ARRAY(R, P->edge_of, P->n);
     WK_FREE_ARRAY(R, P, 1);
 }
 

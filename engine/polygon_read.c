@@ -908,14 +908,24 @@ static wk_status graphml_polygon(wk_run *R, xmlDoc *doc, const char *name, wk_po
             if (G.deg[v] < UINT32_MAX) G.deg[v]++;
         }
     }
-    for (uint32_t v = 0; v < G.nn; v++)
-        if (G.deg[v] != 2) {
-            st = WK_FAIL(R, WK_EINPUT, name, xmlGetLineNo(G.node[v]),
-                         "node '%.60s' has %u incident edge%s; the edges must form one cycle "
-                         "(every node on exactly 2)",
-                         (const char *)G.id[v].s, G.deg[v], G.deg[v] == 1 ? "" : "s");
+    /* Disjoint simple cycles through every node are a polygon (with holes),
+    ** unless R->opt.pslg asks for a PSLG; anything else is a PSLG
+    ** (engine/pslg.c checks it). */
+    bool cycles = !R->opt.pslg;
+    for (uint32_t v = 0; v < G.nn && cycles; v++) cycles = G.deg[v] == 2;
+    if (!cycles) {
+        long *lines = WK_NEW_ARRAY(R, long, (size_t)G.nn + G.ne);
+        if (!lines) {
+            st = WK_ENOMEM;
             goto done;
         }
+        for (uint32_t v = 0; v < G.nn; v++) lines[v] = xmlGetLineNo(G.node[v]);
+        for (uint32_t e = 0; e < G.ne; e++) lines[G.nn + e] = xmlGetLineNo(G.edge[e]);
+        st = wk_pslg_from_arrays(R, G.nn, G.nx, G.ny, G.ne, G.src, G.dst, G.ew, name, lines,
+                                 lines + G.nn, out);
+        WK_FREE_ARRAY(R, lines, (size_t)G.nn + G.ne);
+        goto done;
+    }
 
     /* Walk every cycle: from the first node in document order not yet on
     ** one, along its first edge.  Then the ring of largest area (the one

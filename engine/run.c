@@ -121,6 +121,16 @@ wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skele
     size_t live0 = R->alloc.live;
     wk_run_reset_peak(R);
     R->variant = V;
+    if (P->pslg && !(V->flags & WK_VARIANT_PSLG)) {
+        wk_status st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                               "variant %s does not take PSLG input (a graph that is not disjoint "
+                               "simple cycles); %s does",
+                               V->name,
+                               wk_variant_with_flags(WK_VARIANT_PSLG) ? wk_variant_with_flags(WK_VARIANT_PSLG)
+                                                                      : "(none registered)");
+        if (R->obs->finished) R->obs->finished(R->obs_ud, false);
+        return st;
+    }
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     wk_status st = V->run(R, P, out);

@@ -787,6 +787,7 @@ wk_status wk_validate(wk_run *R, const wk_polygon *P, const wk_skeleton *S, doub
     /* A separate path for weights <= 0 or a cut at a height: the properties
     ** below (a tree inside P, face areas, planarity) need positive weights
     ** and a vanished wavefront (validate_general.c). */
+    if (P->pslg) return wk_validate_pslg(R, P, S, tol, rep);
     bool general = R->opt.height > 0;
     for (uint32_t e = 0; e < P->n && !general; e++) general = !(P->w[e] > 0);
     if (general) return wk_validate_general(R, P, S, tol, rep);

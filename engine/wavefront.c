@@ -21,6 +21,12 @@
 ** vertex of the touched cycles: in full when its target piece disappeared
 ** (or the vertex is new), incrementally (new pieces only) otherwise.
 **
+** PSLGs (wk_polygon.pslg, engine/pslg.c): the rings are the face cycles of
+** the graph's half-edges, so the same model runs; the initial wavefront
+** touches itself (both sides of a segment, the corners at a node), which
+** wk_wf_split_test does not take for splits, and the run ends at a time
+** horizon (wavefront_horizon.c) instead of when the wavefront has vanished.
+**
 ** Tolerances: WK_TOL_REL times the polygon's scale for distances, divided by
 ** the largest weight for times (wskel.h).
 */
@@ -168,6 +174,14 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     const wk_offset_line *L = &W->L[A->eout];
     double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
     if (rate >= -WK_APPROACH_REL * (L->w + fabs(V->vel.x) + fabs(V->vel.y))) return;
+    /* A PSLG's initial wavefront touches itself: the two sides of a segment
+    ** and the corners around a node start on each other's lines (and on
+    ** the pieces the collinear rule extends at t = 0).  A vertex born at
+    ** t = 0 on (or behind) the piece's line and moving behind it can meet
+    ** that line only at t = 0 (its distance is linear in t), where a valid
+    ** PSLG has no contact but these: its nodes keep WK_PSLG_MIN_CLEARANCE_REL
+    ** (above eps_d) from the edges not at them.  No split. */
+    if (W->P->pslg && V->t0 == 0 && wk_offset_distance(L, V->p0, 0) <= W->eps_d) return;
     wk_point pv = wk_wf_pos(V, W->t_now);
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
@@ -426,6 +440,8 @@ static wk_status simulate(wk_wavefront *W) {
         if (schedule(W, i) != WK_OK) return R->err.code;
     }
     uint64_t same_time = 0;
+    double stop = P->pslg ? wf_event_limit(W) : INFINITY;
+    bool pslg_default = P->pslg && !(R->opt.until > 0), stop_final = false;
     for (;;) {
         /* the finder's own events (e.g. 000's start and switch events) go first when
         ** they are not later than the next wavefront event */
@@ -439,6 +455,15 @@ static wk_status simulate(wk_wavefront *W) {
             }
         }
         if (!W->Q.size) break;
+        /* a PSLG's horizon: events after it are not part of the skeleton;
+        ** the default one is set after the last event before the limit, and
+        ** the events up to it still count */
+        if (tq > stop) {
+            if (!pslg_default || stop_final) break;
+            stop = wf_default_horizon(W);
+            stop_final = true;
+            if (tq > stop) break;
+        }
         uint32_t first = wk_event_queue_pop(R, &W->Q);
         double t = W->v[first].ev_t;
         if (t < W->t_now) t = W->t_now;
@@ -457,6 +482,12 @@ static wk_status simulate(wk_wavefront *W) {
         }
         if (process_group(W, t) != WK_OK) return R->err.code;
     }
+    /* A PSLG's outer wavefront never vanishes: what is alive at the
+    ** horizon ends there (wavefront_horizon.c). */
+    if (P->pslg)
+        return wf_close_at_horizon(W, R->opt.until > 0 ? R->opt.until
+                                      : stop_final     ? stop
+                                                       : wf_default_horizon(W));
     for (uint32_t i = 0; i < W->nv; i++)
         if (W->v[i].alive) {
             return WK_FAIL(R, WK_EALGO, P->name, 0,
@@ -489,6 +520,7 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
     W.origin = wk_polygon_centre(P);
     for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge_at(P, i, W.origin, &W.L[i]);
     if ((st = wk_skeleton_new(R, P, &W.S)) != WK_OK) goto done;
+    if (P->pslg && (st = wf_check_horizon(&W)) != WK_OK) goto done;
     st = simulate(&W);
     if (st == WK_OK) st = wk_skeleton_merge_pass_through(R, W.S);
 done:

@@ -117,6 +117,20 @@ void wf_link(wk_wavefront *W, uint32_t a, uint32_t b);
 wk_status wf_mark_fresh(wk_wavefront *W, uint32_t v);
 wk_status wf_push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint32_t x);
 
+/* wavefront_horizon.c: a PSLG's wavefront at its horizon T (R->opt.until,
+** or wf_default_horizon after the last event): every alive vertex ends at a node
+** at t = T and the pieces between them become the cap's arcs; sets
+** W->S->horizon. */
+wk_status wf_close_at_horizon(wk_wavefront *W, double T);
+/* The default horizon: now plus WK_PSLG_HORIZON_MARGIN diagonals over the
+** largest weight. */
+double wf_default_horizon(const wk_wavefront *W);
+/* The last event time a PSLG's run follows: --until, or by default
+** WK_PSLG_DEFAULT_EVENTS_REL diagonals over the smallest weight. */
+double wf_event_limit(const wk_wavefront *W);
+/* --until within the input domain (WK_PSLG_MAX_HORIZON_REL); WK_EINPUT. */
+wk_status wf_check_horizon(const wk_wavefront *W);
+
 /* wavefront_group.c: resolve the group of events seeded by W->seeds at
 ** time t (W->fresh and W->dead list what it created and ended). */
 wk_status wf_resolve_group(wk_wavefront *W, double t);

@@ -9,7 +9,8 @@
 ** ST_StraightSkeleton does with Z for the height of the roof), properties
 ** {"a": node, "b": node, "left": edge, "right": edge} in input numbering
 ** (as the json and text formats).  A "wskel" member at the top names the
-** polygon and the counts.
+** polygon and the counts.  A PSLG's skeleton (wk_polygon.pslg) has its cap,
+** the wavefront at the horizon: those arcs have "left": -1.
 ** Skeleton, WKT: one line, MULTILINESTRING Z with one two-point line per arc
 ** in arc order (x y t).
 ** Offsets, GeoJSON: a FeatureCollection with one Feature per time, in the
@@ -23,7 +24,10 @@
 #include "write.h"
 
 wk_status wk_write_geojson(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
-    if (wk_write_begin(R, P, S, "write geojson: ") != WK_OK) return R->err.code;
+    /* a PSLG's skeleton has its cap (the wavefront at the horizon): left -1 */
+    if ((P->pslg ? wk_write_begin_capped(R, P, S, "write geojson: ")
+                 : wk_write_begin(R, P, S, "write geojson: ")) != WK_OK)
+        return R->err.code;
     fputs("{\"type\": \"FeatureCollection\",\n \"wskel\": {\"polygon\": ", f);
     wk_write_json_string(f, P->name[0] ? P->name : "polygon");
     fprintf(f, ", \"n\": %u, \"nodes\": %u, \"arcs\": %u, \"z\": \"t\"},\n \"features\": [", P->n,
@@ -32,19 +36,21 @@ wk_status wk_write_geojson(wk_run *R, FILE *f, const wk_polygon *P, const wk_ske
         const wk_arc *c = &S->arcs[i];
         const wk_node *a = &S->nodes[c->a], *b = &S->nodes[c->b];
         fprintf(f,
-                "%s\n  {\"type\": \"Feature\", \"properties\": {\"a\": %u, \"b\": %u, \"left\": %u, "
-                "\"right\": %u}, \"geometry\": {\"type\": \"LineString\", \"coordinates\": "
+                "%s\n  {\"type\": \"Feature\", \"properties\": {\"a\": %u, \"b\": %u, \"left\": %lld, "
+                "\"right\": %lld}, \"geometry\": {\"type\": \"LineString\", \"coordinates\": "
                 "[[%.17g, %.17g, %.17g], [%.17g, %.17g, %.17g]]}}",
                 i ? "," : "", wk_polygon_output_node(P, c->a), wk_polygon_output_node(P, c->b),
-                wk_polygon_input_edge(P, c->left), wk_polygon_input_edge(P, c->right), a->x, a->y,
-                a->t, b->x, b->y, b->t);
+                wk_write_face(P, c->left), wk_write_face(P, c->right), a->x, a->y, a->t, b->x, b->y,
+                b->t);
     }
     fputs("\n ]}\n", f);
     return wk_write_end(R, f, "geojson");
 }
 
 wk_status wk_write_wkt(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S) {
-    if (wk_write_begin(R, P, S, "write wkt: ") != WK_OK) return R->err.code;
+    if ((P->pslg ? wk_write_begin_capped(R, P, S, "write wkt: ")
+                 : wk_write_begin(R, P, S, "write wkt: ")) != WK_OK)
+        return R->err.code;
     if (!S->n_arcs) {
         fputs("MULTILINESTRING Z EMPTY\n", f);
     } else {

@@ -9,6 +9,12 @@
 **                                      whose faces lie left/right of a -> b
 **                                      (-1: the cap of a skeleton cut at a
 **                                      height, --height)
+**    "pslg":{"horizon":T, "graph_nodes":V, "graph_edges":E,
+**            "corner_node":[...], "edge_of":[...]}   only for a PSLG (after
+**                                      "rings"): nodes[0..n) are its corners,
+**                                      edges its half-edges and caps (-1 in
+**                                      edge_of), the arcs with -1 on the left
+**                                      the wavefront at T
 **    "stats":{COUNTER:count, ... (every name of WK_COUNTER_LIST),
 **             "time_s":seconds, "peak_bytes":bytes}}
 **
@@ -48,7 +54,21 @@ wk_status wk_write_json(wk_run *R, FILE *f, const wk_polygon *P, const wk_skelet
     fprintf(f, ",\"n\":%u,\"r\":%u,\"rings\":[", P->n, P->r);
     for (uint32_t k = 0; k < P->n_rings; k++)
         fprintf(f, "%s%u", k ? "," : "", P->ring_start[k + 1] - P->ring_start[k]);
-    fputs("],\n\"nodes\":[\n", f);
+    fputc(']', f);
+    if (P->pslg) {
+        /* a PSLG: the horizon, and each corner's input node and each stored
+        ** edge's input edge (-1: a cap) in the GraphML's document order */
+        fputs(",\n\"pslg\":{\"horizon\":", f);
+        put_double(f, S->horizon);
+        fprintf(f, ",\"graph_nodes\":%u,\"graph_edges\":%u,\"corner_node\":[",
+                P->n_graph_vertices, P->n_graph_edges);
+        for (uint32_t i = 0; i < P->n; i++) fprintf(f, "%s%u", i ? "," : "", P->corner_vertex[i]);
+        fputs("],\"edge_of\":[", f);
+        for (uint32_t i = 0; i < P->n; i++)
+            fprintf(f, "%s%lld", i ? "," : "", P->edge_of[i] == WK_NONE ? -1LL : (long long)P->edge_of[i]);
+        fputs("]}", f);
+    }
+    fputs(",\n\"nodes\":[\n", f);
     for (uint32_t i = 0; i < S->n_nodes; i++) {
         const wk_node *v = &S->nodes[wk_stored_node(P, vertex_of, i)];
         fputc('[', f);

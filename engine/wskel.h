@@ -231,6 +231,12 @@ typedef struct wk_options {
                                 edge-weight) as the roof's pitch in degrees,
                                 w = 1 / tan(pitch): 90 a wall (0), above 90
                                 an overhang (< 0); --angles */
+    double until;            /* PSLGs: the time horizon (--until T > 0): the
+                                wavefront is followed up to t = T and the
+                                arcs still alive end at nodes at t = T; 0:
+                                the default horizon (engine/pslg.c) */
+    bool pslg;               /* the GraphML reader makes a PSLG even of
+                                disjoint simple cycles (--pslg) */
     double step_scale;       /* variants that advance in time steps (004's
                                 predictor-corrector): the first increment
                                 times this (1; --step); the skeleton must
@@ -390,7 +396,27 @@ typedef struct wk_polygon {
     bool reversed;       /* the outer ring's input was clockwise and was reversed */
     uint32_t *input_index; /* input_index[i]: the input number of stored vertex i */
     char name[256];      /* file name for messages */
+    /* A planar straight-line graph (engine/pslg.c) is stored as the cycles
+    ** of its initial wavefront: one ring per face cycle of half-edges (the
+    ** face on the left), a vertex of degree d once per angular gap (a
+    ** "corner"), a terminal (degree 1) twice with a cap edge of length 0
+    ** between, perpendicular to its segment.  Rings may then share points
+    ** and run along each other (both sides of a segment), and the outer
+    ** face's cycle has no enclosing ring; P->p and the skeleton's first n
+    ** nodes are the corners.  NULL / 0 for polygons. */
+    bool pslg;
+    wk_point *dir;       /* PSLG: direction of stored edge e (b - a for a
+                            half-edge, the incoming half-edge's direction
+                            turned clockwise for a cap); NULL for polygons */
+    uint32_t *corner_vertex; /* PSLG: the input node (document order) of each corner */
+    uint32_t *edge_of;   /* PSLG: the input edge (document order) of each
+                            stored edge; WK_NONE for a cap */
+    uint32_t n_graph_vertices, n_graph_edges; /* PSLG: the input graph's size */
 } wk_polygon;
+
+/* The direction of stored edge e (not normalised): its end minus its start,
+** or for a PSLG the stored direction (a cap has length 0). */
+static inline wk_point wk_polygon_edge_dir(const wk_polygon *P, uint32_t e);
 
 /* Largest number of rings (1 + holes) accepted. */
 #define WK_POLYGON_MAX_RINGS 10000000u
@@ -406,6 +432,11 @@ static inline uint32_t wk_polygon_next(const wk_polygon *P, uint32_t i) {
 static inline uint32_t wk_polygon_prev(const wk_polygon *P, uint32_t i) {
     uint32_t k = wk_polygon_ring(P, i);
     return i == P->ring_start[k] ? P->ring_start[k + 1] - 1 : i - 1;
+}
+static inline wk_point wk_polygon_edge_dir(const wk_polygon *P, uint32_t e) {
+    if (P->dir) return P->dir[e];
+    wk_point a = P->p[e], b = P->p[wk_polygon_next(P, e)];
+    return (wk_point){b.x - a.x, b.y - a.y};
 }
 
 /* Build a polygon from arrays (copied), validate it (see wk_polygon_validate)
@@ -433,6 +464,44 @@ wk_status wk_polygon_read_file(wk_run *R, const char *path, wk_polygon **out);
 wk_status wk_polygon_read_wpoly(wk_run *R, FILE *f, const char *name, wk_polygon **out);
 wk_status wk_polygon_read_graphml(wk_run *R, const char *buf, size_t len, const char *name,
                                   wk_polygon **out);
+/* Smallest distance accepted between a PSLG node and an edge not at it,
+** as a fraction of the bounding-box diagonal: above the simulation's
+** coarsest eps_d (WK_TOL_REL times WK_TOL_ESCALATE_MAX, tolerance.h), so
+** that no contact the input does not have happens at t = 0 (a "Y" whose
+** arm ended 2e-15 from a segment, below eps_d but not touching it, left
+** the wavefront without a cap).  Nodes joined by edges shorter than it
+** count as one node (an edge below the tolerance collapses at once, as in
+** polygons).  Input domain; an input that means the node to lie on the
+** edge must say so with a node there. */
+#define WK_PSLG_MIN_CLEARANCE_REL 1e-7
+/* A PSLG's default time horizon: the last event's time plus this many
+** bounding-box diagonals over the largest weight.  After the last event the
+** wavefront only grows, every bounded component has vanished and the
+** skeleton has all its nodes; the margin shows the unbounded arcs' directions
+** (an input with no event, a single segment, still gets a positive horizon). */
+#define WK_PSLG_HORIZON_MARGIN 0.25
+/* The default run follows a PSLG's events up to this many diagonals over
+** the smallest weight: every bounded wavefront component has vanished by
+** then (a point of a bounded face is less than a diagonal from its
+** boundary, which reaches it by that distance over the smallest weight).
+** Later events of the unbounded wavefront (nearly parallel pieces that
+** shrink very slowly: a "+" whose arms are 1e-16 off perpendicular has one
+** at t = 4.5e16) are left to an explicit --until. */
+#define WK_PSLG_DEFAULT_EVENTS_REL 1.0
+/* Largest --until accepted, in diagonals over the smallest weight: beyond
+** it the nodes at the horizon are so far out that their rounding exceeds
+** the validator's tolerance (input domain). */
+#define WK_PSLG_MAX_HORIZON_REL 1e6
+/* A PSLG from arrays (engine/pslg.c): nv nodes (x, y; node_line may be
+** NULL), ne edges src[i] - dst[i] of weight w[i] (w may be NULL: 1;
+** edge_line may be NULL).  Validated (no isolated node, no duplicate
+** point or edge, no crossing, touching or overlapping edges, the input
+** domain's bounds) and stored as its initial wavefront's face cycles (see
+** wk_polygon.pslg).  WK_EINPUT naming the culprit and its line. */
+wk_status wk_pslg_from_arrays(wk_run *R, uint32_t nv, const double *x, const double *y,
+                              uint32_t ne, const uint32_t *src, const uint32_t *dst,
+                              const double *w, const char *name, const long *node_line,
+                              const long *edge_line, wk_polygon **out);
 /* GeoJSON and WKT from memory (engine/polygon_read_gis.c: the accepted
 ** forms, the weights property, --part).  buf[len] need not be NUL. */
 wk_status wk_polygon_read_geojson(wk_run *R, const char *buf, size_t len, const char *name,
@@ -532,6 +601,9 @@ typedef struct wk_skeleton {
     uint32_t n_arcs, cap_arcs;
     wk_node *nodes;
     wk_arc *arcs;
+    double horizon;          /* a PSLG's skeleton: the time horizon T (its cap,
+                                the wavefront at T, has arcs with WK_NONE on
+                                the left); 0 otherwise */
 } wk_skeleton;
 
 /* New skeleton whose first P->n nodes are P's vertices at t = 0. */
@@ -576,6 +648,11 @@ wk_status wk_validate(wk_run *R, const wk_polygon *P, const wk_skeleton *S, doub
 ** or a weight is <= 0.  area_error is not computed (0). */
 wk_status wk_validate_general(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
                               wk_validate_report *rep);
+/* The checks for a PSLG's skeleton up to its horizon (engine/validate_pslg.c
+** says what they prove); wk_validate takes this path by itself when P->pslg.
+** area_error: |sum of face areas - area swept by the horizon|. */
+wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
+                           wk_validate_report *rep);
 
 /* -------------------------------------------------------------- writers */
 
@@ -680,6 +757,9 @@ wk_status wk_write_offsets_wkt(wk_run *R, FILE *f, wk_offset_set *const *O, uint
 ** readers accept such weights only when R->opt.nonpositive_weights says the
 ** chosen variant has this flag */
 #define WK_VARIANT_NONPOSITIVE_WEIGHTS 4u
+/* takes PSLG input (wk_polygon.pslg); wk_solve refuses a PSLG for any
+** other variant with WK_EUNSUPPORTED */
+#define WK_VARIANT_PSLG 8u
 const char *wk_variant_name(const wk_variant *V);
 const char *wk_variant_summary(const wk_variant *V);
 unsigned wk_variant_flags(const wk_variant *V); /* WK_VARIANT_* */

@@ -13,6 +13,8 @@
 #       an existing file survives a failed run; a FIFO is written in place
 #   (g) determinism: two runs give identical nodes and arcs (and text output)
 #   (h) bin/wskel-gen: every family at n = 50 passes --check; exit codes 1, 64
+#   (i) PSLG GraphML (tests/data/pslg): --check, --until, the segment's cap,
+#       other variants refuse (exit 2), --pslg
 #
 # Exits non-zero if any check failed; prints "cli tests: N passed, M failed".
 # Environment: WSKEL_BIN and WSKEL_GEN override bin/wskel and bin/wskel-gen;
@@ -390,6 +392,56 @@ if "$GEN" star --n 200 --seed 7 --weights uniform -o "$TMP/det.wpoly" 2>"$TMP/st
 else
   fail "determinism: generate the input" "$(cat "$TMP/stderr")"
 fi
+
+# ------------------------------------------------------ (i) PSLG input (GraphML)
+PSLG=tests/data/pslg
+n_pslg=0
+for f in "$PSLG"/*.graphml; do
+  n_pslg=$((n_pslg + 1))
+  run "$WSKEL" --check -o "$TMP/pslg.json" "$f"
+  expect "pslg $(basename "$f"): --check exits 0" 0
+  run "$WSKEL" --check --until 0.75 --format text "$f"
+  expect "pslg $(basename "$f"): --until 0.75 exits 0" 0
+  if awk '/^nodes/{f=1;next} /^arcs/{f=0} f && $3 > 0.75 + 1e-12 {bad=1} END{exit bad}' "$OUT"; then
+    pass "pslg $(basename "$f"): no node after the horizon"
+  else fail "pslg $(basename "$f"): no node after the horizon" "$(head -c 400 "$OUT")"; fi
+done
+[ "$n_pslg" -gt 3 ] && pass "pslg: test files ran" || fail "pslg: test files ran" "only $n_pslg"
+# the segment (0,0)-(2,0): no event, default horizon 0.25 diagonals = 0.5, the cap a rectangle
+run "$WSKEL" "$PSLG/segment.graphml"
+h=$("$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); print(d["pslg"]["horizon"], sorted((x,y) for x,y,t in d["nodes"] if t > 0))' "$OUT" 2>/dev/null)
+if [ "$h" = "0.5 [(-0.5, -0.5), (-0.5, 0.5), (2.5, -0.5), (2.5, 0.5)]" ]; then pass "pslg segment: rectangle at the default horizon"
+else fail "pslg segment: rectangle at the default horizon" "got '$h'"; fi
+for v in arrangement monotone motorcycle deforming; do
+  run "$WSKEL" --variant "$v" -o "$TMP/refused.json" "$PSLG/plus.graphml"
+  expect "pslg: --variant $v refuses (exit 2)" 2 "does not take PSLG input"
+  [ ! -e "$TMP/refused.json" ] && pass "pslg: --variant $v leaves no file" || fail "pslg: --variant $v leaves no file" ""
+done
+for fmt in svg obj vtp; do
+  run "$WSKEL" --format "$fmt" -o "$TMP/pslg.$fmt" "$PSLG/plus.graphml"
+  expect "pslg: --format $fmt refused (exit 2)" 2 "json, text, geojson or wkt only"
+  [ ! -e "$TMP/pslg.$fmt" ] && pass "pslg: --format $fmt leaves no file" || fail "pslg: --format $fmt leaves no file" ""
+done
+run "$WSKEL" --offset 0.5 --format geojson "$PSLG/plus.graphml"
+expect "pslg: --offset refused (exit 2)" 2 "json, text, geojson or wkt only"
+for fmt in text wkt geojson; do
+  run "$WSKEL" --format "$fmt" "$PSLG/plus.graphml"
+  expect "pslg: --format $fmt exits 0" 0
+done
+caps=$("$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); print(sum(f["properties"]["left"] == -1 for f in d["features"]))' "$OUT" 2>/dev/null)
+[ "$caps" = 12 ] && pass "pslg: geojson has the 12 cap arcs of the +" || fail "pslg: geojson has the 12 cap arcs of the +" "got '$caps'"
+run "$WSKEL" --until 0 "$PSLG/plus.graphml"
+expect "pslg: --until 0 is a usage error" 64 "--until must be a positive number"
+run "$WSKEL" --until 1e300 "$PSLG/plus.graphml"
+expect "pslg: --until beyond the input domain exits 1" 1 "beyond the horizon the output resolves"
+run "$WSKEL" tests/data/good/weighted.graphml
+n1=$("$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); print(d["n"], "pslg" in d)' "$OUT" 2>/dev/null)
+run "$WSKEL" --pslg tests/data/good/weighted.graphml
+expect "--pslg on a polygon's GraphML exits 0" 0
+n2=$("$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); print(d["n"], "pslg" in d)' "$OUT" 2>/dev/null)
+if [ "${n1#* }" = "False" ] && [ "${n2#* }" = "True" ] && [ "${n2% *}" = $((2 * ${n1% *})) ]; then
+  pass "--pslg: a polygon's cycles read as a PSLG (both sides)"
+else fail "--pslg: a polygon's cycles read as a PSLG (both sides)" "without: '$n1', with: '$n2'"; fi
 
 # ------------------------------------------------------ (h) wskel-gen
 run "$GEN" --list

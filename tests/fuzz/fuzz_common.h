@@ -118,7 +118,37 @@ static inline void close_run(wk_run *R, const char *what) {
 
 /* The accepted polygon passes the polygon checks again and survives the
 ** .wpoly writer and reader unchanged. */
+/* An accepted PSLG (engine/pslg.c): every graph edge is stored twice (its
+** two sides), every cap sits between two corners of one node, the ids are
+** in range. */
+static inline void check_accepted_pslg(const wk_polygon *P) {
+    if (P->n < 4 || !P->dir || !P->corner_vertex || !P->edge_of)
+        finding("accepted a PSLG of %u corners without its arrays", P->n);
+    uint32_t *seen = calloc(P->n_graph_edges + 1, sizeof *seen);
+    if (!seen) abort();
+    for (uint32_t i = 0; i < P->n; i++) {
+        uint32_t e = P->edge_of[i], nx = wk_polygon_next(P, i);
+        if (P->corner_vertex[i] >= P->n_graph_vertices) finding("corner %u: node out of range", i);
+        if (e == WK_NONE) {
+            if (P->corner_vertex[i] != P->corner_vertex[nx] || P->p[i].x != P->p[nx].x ||
+                P->p[i].y != P->p[nx].y)
+                finding("cap %u does not join two corners of one node", i);
+        } else if (e >= P->n_graph_edges) {
+            finding("stored edge %u: graph edge %u out of range", i, e);
+        } else {
+            seen[e]++;
+        }
+    }
+    for (uint32_t e = 0; e < P->n_graph_edges; e++)
+        if (seen[e] != 2) finding("graph edge %u stored %u times, not twice", e, seen[e]);
+    free(seen);
+}
+
 static inline void check_accepted(wk_run *R, const wk_polygon *P) {
+    if (P->pslg) { /* no polygon: its own checks, no .wpoly round trip */
+        check_accepted_pslg(P);
+        return;
+    }
     if (P->n < 3) finding("accepted a polygon of %u vertices", P->n);
     if (wk_polygon_validate(R, P) != WK_OK)
         finding("accepted polygon fails wk_polygon_validate: %s", R->err.msg);

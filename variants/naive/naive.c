@@ -17,7 +17,7 @@ static wk_status naive_run(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
 const wk_variant wk_variant_naive = {
     "naive",
     "reference: event-driven wavefront with brute-force split detection",
-    WK_VARIANT_WEIGHTS,
+    WK_VARIANT_WEIGHTS | WK_VARIANT_PSLG,
     NULL,
     0,
     naive_run,
