@@ -45,6 +45,7 @@ from testlib import cs  # noqa: E402
 CASES = int(os.environ.get("WSKEL_DEGENERATE_CASES", "2000"))
 REAL_CASES = int(os.environ.get("WSKEL_REAL_CASES", "24"))
 MONO_CASES = int(os.environ.get("WSKEL_MONO_CASES", "400"))
+TURNED_CASES = int(os.environ.get("WSKEL_TURNED_CASES", "60"))
 # Known open failures of the reference (and so of every variant), seed ->
 # the text of the failure: the test asserts that exactly these fail, and in
 # that way, so a fix shows too.  Empty now: seed 150 ("antiparallel
@@ -203,6 +204,37 @@ def monotone_any_direction(seed):
     return "monotone n=%d seed %d (%s, %s weights)" % (len(pts), seed, style, mode), pts, w
 
 
+# A glyph 'F' (DejaVu Sans Bold's outline, font units / 10): the bar's two
+# reflex vertices meet head-on as the bar collapses, between the stem's
+# collinear edges, the same instant as its walls meet.
+GLYPH_F = [(9.1875, 72.90625), (59.90625, 72.90625), (59.90625, 58.6875), (27.984375, 58.6875),
+           (27.984375, 45.125), (58.015625, 45.125), (58.015625, 30.90625),
+           (27.984375, 30.90625), (27.984375, 0.0), (9.1875, 0.0)]
+
+
+def turned_copy(seed):
+    """(name, points, weights, angle, shift): a polygon that is degenerate on
+    purpose (the glyph F, or a grid polygon of generated()) and the rigid
+    motion applied to it (turned by a random angle, sometimes moved 1e6):
+    after rounding, its collinear edges and simultaneous events are so only
+    up to 1e-16 relative."""
+    rng = random.Random(seed)
+    if seed % 3 == 0:
+        pts, w = GLYPH_F, [1] * len(GLYPH_F)
+        name = "glyph F"
+    else:
+        g = None
+        k = seed
+        while g is None:
+            g = generated(10000 + k)
+            k += 7919
+        pts, w = g
+        name = "grid polygon %d" % k
+    th = rng.uniform(0, 2 * math.pi)
+    shift = rng.choice([0.0, 1e6])
+    return "%s turned by %.6f, moved %g (seed %d)" % (name, th, shift, seed), pts, w, th, shift
+
+
 class Degenerate(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -295,6 +327,42 @@ class Degenerate(unittest.TestCase):
             self.check_case(t, name, path)
         t.report(self)
         self.assertEqual(t.cases, REAL_CASES, t.summary())
+
+    def test_turned_copies(self):
+        """Rounding does not change the answer: a degenerate polygon turned
+        by an angle (and moved 1e6) in doubles has the turned skeleton of the
+        polygon itself (naive on both, compared after moving the first one's
+        nodes).  An exact program follows the rounding instead (CGAL keeps
+        slivers 1e-10 wide that run for units; see README, tolerance
+        policy).  Every variant equals naive on the turned copy."""
+        t = tl.Tally("turned copies")
+        tv = tl.Tally("turned copies, variants against naive")
+        for seed in range(TURNED_CASES):
+            name, pts, w, th, shift = turned_copy(seed)
+            ref = os.path.join(self.work, "plain.json")
+            rc, err = self.run_variant(["--variant", "naive"], self.write(pts, w, name), ref)
+            if rc != 0:
+                t.case(["%s: naive on the unturned polygon: exit %s: %s" % (name, rc, err)], None)
+                continue
+            c, s_ = math.cos(th), math.sin(th)
+            moved = [(shift + c * x - s_ * y, shift + s_ * x + c * y) for x, y in pts]
+            poly = tl.write_wpoly(os.path.join(self.work, "turned.wpoly"), moved, w, name)
+            out = os.path.join(self.work, "turned.json")
+            rc, err = self.run_variant(["--variant", "naive"], poly, out)
+            if rc != 0:
+                t.case(["%s: naive exit %s: %s" % (name, rc, err)], poly)
+                continue
+            a = cs.load(ref)
+            a["nodes"] = [[shift + c * x - s_ * y, shift + s_ * x + c * y, tt] for x, y, tt in a["nodes"]]
+            b = cs.load(out)
+            res = cs.compare(a, b, tol=max(cs.default_tol(b), 1e-7 * shift))
+            fails = [] if res.identical else ["%s: the skeleton is not the turned one: %s" % (name, res.summary())]
+            t.case(fails, poly)
+            self.check_case(tv, name, poly)
+        t.report(self)
+        tv.report(self)
+        self.assertEqual(t.cases, TURNED_CASES, t.summary())
+        self.assertEqual(tv.cases, TURNED_CASES, tv.summary())
 
     def test_monotone_any_direction(self):
         """Monotone by construction, so the monotone variant must not refuse;
