@@ -66,6 +66,8 @@ typedef struct df_state {
     double eps_d;         /* distance tolerance (tolerance.h policy) */
     double eps_t;         /* events within this of the earliest are one group */
     double wmax;          /* largest |weight| (1 if every edge is a wall) */
+    double t_vanish;      /* positive weights, no height: every vertex has
+                             ended by then (0: no such bound) */
     bool nonpositive;     /* some weight is <= 0 */
     double t;             /* present */
     double dt;            /* the next step's increment (the step-size policy) */

@@ -257,7 +257,7 @@ wk_status df_predict(df_state *D, double *t_event) {
             wk_point a0 = df_pos(A, t), a1 = df_pos(A, t1), b0 = df_pos(B, t), b1 = df_pos(B, t1);
             double len = fmax(hypot(b0.x - a0.x, b0.y - a0.y), hypot(b1.x - a1.x, b1.y - a1.y));
             double parts = ceil(len / cell);
-            uint32_t np = parts < 1 ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
+            uint32_t np = !(parts >= 1) ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
             bool big = false;
             for (uint32_t s = 0; s < np && !big; s++) {
                 double f0 = (double)s / np, f1 = (double)(s + 1) / np;
@@ -304,7 +304,7 @@ wk_status df_predict(df_state *D, double *t_event) {
         ** path crosses many cells, its box far more) */
         wk_point p0 = df_pos(V, t), p1 = df_pos(V, t1);
         double parts = ceil(hypot(p1.x - p0.x, p1.y - p0.y) / cell);
-        uint32_t np = parts < 1 ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
+        uint32_t np = !(parts >= 1) ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
         bool all = false;
         for (uint32_t s = 0; s < np && !all; s++) {
             double f0 = (double)s / np, f1 = (double)(s + 1) / np;
