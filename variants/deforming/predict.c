@@ -125,16 +125,19 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
 /* A vertex p reaching the line of the piece a -> next(a) at te (004 eq.
 ** 28-30 on g's own coefficients, see test_swap): an event of the given
 ** kind if p lies within the piece's extent then and did not come out of an
-** end of the piece (both resolved at the last event point: no new
-** contact). */
+** end of the piece (born at the same node and still there: both came out
+** of one event point, no new contact).  Only the same node: two vertices
+** that merely coincide (vertex-on-vertex, the far ends of a region
+** collapsing along its whole length, as in integer-weighted combs) meet
+** now, and skipping them lost the event (a spike left alive). */
 static wk_status contact(df_state *D, uint32_t p, uint32_t a, double t, double t1, double te,
                          double eps_c, uint32_t kind) {
     const df_vertex *V = &D->v[p], *A = &D->v[a], *B = &D->v[A->next];
     const wk_offset_line *L = &D->L[A->eout];
     wk_point p0 = df_pos(V, t), a0 = df_pos(A, t), b0 = df_pos(B, t);
     double c2 = eps_c * eps_c;
-    if ((p0.x - a0.x) * (p0.x - a0.x) + (p0.y - a0.y) * (p0.y - a0.y) <= c2 ||
-        (p0.x - b0.x) * (p0.x - b0.x) + (p0.y - b0.y) * (p0.y - b0.y) <= c2)
+    if ((V->node == A->node && (p0.x - a0.x) * (p0.x - a0.x) + (p0.y - a0.y) * (p0.y - a0.y) <= c2) ||
+        (V->node == B->node && (p0.x - b0.x) * (p0.x - b0.x) + (p0.y - b0.y) * (p0.y - b0.y) <= c2))
         return WK_OK;
     if (te < t) te = t;
     if (te > t1) te = t1;
