@@ -122,22 +122,34 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     return push_event(D, te, DF_COLLAPSE, a, WK_NONE);
 }
 
+static double dist2(wk_point a, wk_point b) {
+    return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
+}
+
+/* Two vertices within the contact distance now that were so when the
+** younger was born came out of one point (an event point resolved
+** already, or input vertices closer than the contact distance): no new
+** contact between a vertex and the piece that ends at the other.  Two
+** that came together since (vertex-on-vertex; the far ends of a region
+** collapsing along its whole length, as in integer-weighted combs) meet
+** now: skipping them would lose the event and leave a spike alive. */
+static bool together_since_birth(const df_vertex *V, const df_vertex *W, double c2) {
+    double tb = V->t0 > W->t0 ? V->t0 : W->t0;
+    return dist2(df_pos(V, tb), df_pos(W, tb)) <= c2;
+}
+
 /* A vertex p reaching the line of the piece a -> next(a) at te (004 eq.
 ** 28-30 on g's own coefficients, see test_swap): an event of the given
 ** kind if p lies within the piece's extent then and did not come out of an
-** end of the piece (born at the same node and still there: both came out
-** of one event point, no new contact).  Only the same node: two vertices
-** that merely coincide (vertex-on-vertex, the far ends of a region
-** collapsing along its whole length, as in integer-weighted combs) meet
-** now, and skipping them lost the event (a spike left alive). */
+** end of the piece (see together_since_birth). */
 static wk_status contact(df_state *D, uint32_t p, uint32_t a, double t, double t1, double te,
                          double eps_c, uint32_t kind) {
     const df_vertex *V = &D->v[p], *A = &D->v[a], *B = &D->v[A->next];
     const wk_offset_line *L = &D->L[A->eout];
     wk_point p0 = df_pos(V, t), a0 = df_pos(A, t), b0 = df_pos(B, t);
     double c2 = eps_c * eps_c;
-    if ((V->node == A->node && (p0.x - a0.x) * (p0.x - a0.x) + (p0.y - a0.y) * (p0.y - a0.y) <= c2) ||
-        (V->node == B->node && (p0.x - b0.x) * (p0.x - b0.x) + (p0.y - b0.y) * (p0.y - b0.y) <= c2))
+    if ((dist2(p0, a0) <= c2 && together_since_birth(V, A, c2)) ||
+        (dist2(p0, b0) <= c2 && together_since_birth(V, B, c2)))
         return WK_OK;
     if (te < t) te = t;
     if (te > t1) te = t1;
@@ -196,6 +208,19 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
         return WK_OK;
     return contact(D, p, a, t, t1, g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate), eps_c,
                    DF_PENETRATION);
+}
+
+/* The event's configuration at te: a collapsing piece no longer than eps_c,
+** a vertex within eps_c of the piece's line. */
+static bool met_at(const df_state *D, const df_event *E, double te, double eps_c) {
+    const df_vertex *A = &D->v[E->kind == DF_COLLAPSE ? E->a : E->b];
+    const df_vertex *B = &D->v[A->next];
+    const wk_offset_line *L = &D->L[A->eout];
+    if (E->kind == DF_COLLAPSE) {
+        wk_point pa = df_pos(A, te), pb = df_pos(B, te);
+        return L->ux * (pb.x - pa.x) + L->uy * (pb.y - pa.y) <= eps_c;
+    }
+    return fabs(wk_offset_distance(L, df_pos(&D->v[E->a], te), te)) <= eps_c;
 }
 
 static int event_cmp(const df_event *x, const df_event *y) {
@@ -346,13 +371,20 @@ wk_status df_predict(df_state *D, double *t_event) {
     wk_count(R, WK_VC_pair_tests, tests);
     D->last_tests = tests;
     if (D->n_ev == 0) return WK_OK;
-    /* keep the earliest events and those within eps_t of them: one group */
+    /* keep the earliest events and those within eps_t of them: one group;
+    ** but only those whose configuration has met at te within the contact
+    ** distance (a piece's length, a vertex's gap), since eps_t times a
+    ** fast vertex's speed can be far more: a piece that a very fast vertex
+    ** (a long spike's tip) would collapse eps_t later is still long at te,
+    ** and grouping it ended its far vertex at the event point (a fuzz
+    ** finding).  Such an event is found again by the next step. */
     double te = INFINITY;
     for (uint32_t k = 0; k < D->n_ev; k++)
         if (D->ev[k].t < te) te = D->ev[k].t;
     uint32_t kept = 0;
     for (uint32_t k = 0; k < D->n_ev; k++)
-        if (D->ev[k].t <= te + D->eps_t) D->ev[kept++] = D->ev[k];
+        if (D->ev[k].t == te || (D->ev[k].t <= te + D->eps_t && met_at(D, &D->ev[k], te, eps_c)))
+            D->ev[kept++] = D->ev[k];
     D->n_ev = kept;
     if (D->n_ev > 1) qsort(D->ev, D->n_ev, sizeof *D->ev, event_cmp_void);
     *t_event = te;
