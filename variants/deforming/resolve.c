@@ -55,6 +55,9 @@
 /* What met at an event point: a penetration from the unswept side (the
 ** region splits there) and a merge (the region joins there) pair the rays
 ** differently, see 3. above. */
+/* atan2's range is (-pi, pi]; M_PI is not C11 */
+#define DF_PI 3.14159265358979323846
+
 #define DF_POINT_SPLIT 1u
 #define DF_POINT_MERGE 2u
 
@@ -417,8 +420,26 @@ static wk_status resolve(df_state *D, double te) {
     for (uint32_t i = 0; i < S->n_r; i++) {
         S->rays[i].newv = i; /* old id, for now */
         if (S->ckind[S->rays[i].k] == DF_POINT_MERGE) S->rays[i].first = !S->rays[i].out;
+        /* a direction just below pi is one with those just above -pi */
+        if (S->rays[i].angle > DF_PI - WK_PARALLEL_SIN) S->rays[i].angle -= 2 * DF_PI;
     }
     if (S->n_r > 1) qsort(S->rays, S->n_r, sizeof *S->rays, ray_cmp); /* rays may be NULL when empty */
+    /* Directions within WK_PARALLEL_SIN of each other are one (lines the
+    ** engine calls parallel; their order is the rounding's): each run of
+    ** them takes its first ray's angle and sorts again, by the lines'
+    ** offsets just before te (ray_cmp), as exactly parallel ones do. */
+    bool runs = false;
+    for (uint32_t i = 1; i < S->n_r; i++) {
+        uint32_t j = i;
+        while (j < S->n_r && S->rays[j].k == S->rays[i - 1].k &&
+               S->rays[j].angle - S->rays[i - 1].angle <= WK_PARALLEL_SIN) {
+            runs |= S->rays[j].angle != S->rays[i - 1].angle;
+            S->rays[j].angle = S->rays[i - 1].angle;
+            j++;
+        }
+        if (j > i) i = j - 1;
+    }
+    if (runs) qsort(S->rays, S->n_r, sizeof *S->rays, ray_cmp);
     if (WK_GROW(R, S->cuts, S->cap_cuts, S->n_r / 2 + 1) != WK_OK) return R->err.code;
     uint32_t *where = WK_NEW_ARRAY(R, uint32_t, S->n_r + 1);
     if (!where) return R->err.code;
