@@ -111,11 +111,14 @@ static bool seed_take(expansion *e, int i) {
 }
 
 /* cgal: unit weights only, and not above --cgal-max-n; a variant without
-** WK_VARIANT_WEIGHTS (motorcycle): unit weights only. */
+** WK_VARIANT_WEIGHTS (motorcycle): unit weights only; a variant named in
+** --max-n: not above its n. */
 static int variant_count(expansion *e) { return e->o->variants.n; }
 static bool variant_take(expansion *e, int i) {
     const char *var = e->o->variants.v[i];
     e->c.variant = var;
+    for (int j = 0; j < e->o->max_n_variant.n; j++)
+        if (!strcmp(var, e->o->max_n_variant.v[j]) && e->n > e->o->max_n.v[j]) return false;
     if (!strcmp(var, "cgal")) {
         if (strcmp(e->c.weights, "unit")) return false;
         if (e->o->cgal_max_n && e->n > e->o->cgal_max_n) return false;

@@ -13,7 +13,8 @@
 ** K_NA.  Two axes also filter (the configuration is left out, not given an
 ** index): holes > 0 for a family without holes (only holes and convex take
 ** them), and on the variant axis the cgal peer for weights other than unit
-** and for n above --cgal-max-n.  A variant that refuses holes (monotone) is
+** and for n above --cgal-max-n, and a variant named in --max-n for n above
+** its bound.  A variant that refuses holes (monotone) is
 ** not filtered: its runs get the status 'unsupported'.  With the default
 ** single holes value 0 the list is the one of before the holes axis, in the
 ** same order (existing CSVs, shards and resumes stay valid).

@@ -57,6 +57,8 @@ typedef struct options {
     bool qsort_ref;        /* measure the qsort() reference (qsort_ref.h) */
     char out[1024];
     uint64_t cgal_max_n;   /* skip cgal above this n; 0: no cap */
+    str_list max_n_variant; /* --max-n V=N: skip variant max_n_variant.v[i] */
+    u64_list max_n;         /* above n = max_n.v[i] (a slow variant in a big sweep) */
     char self_test[16];    /* crash|hang|oom, test-only */
     long self_test_index;  /* configuration index it applies to; -1: all */
     char spec[1024];

@@ -32,6 +32,8 @@ const char bench_usage_text[] =
     "  --seeds S,..        seeds, or A..B (default 1); --seeds-count C: 1..C\n"
     "  --repeats N         runs per configuration (default 1)\n"
     "  --cgal-max-n N      skip cgal configurations with n > N\n"
+    "  --max-n V=N,..      skip configurations of variant V with n > N (a variant\n"
+    "                      too slow for the top of the sweep)\n"
     "\n"
     "limits and checks:\n"
     "  --time-limit SEC    per run, wall clock and CPU (default 60; 0: none)\n"
@@ -221,6 +223,18 @@ void set_option(options *o, const char *key, const char *val) {
         o->jobs = (int)parse_u64(key, val);
         if (o->jobs < 1) die_usage("--jobs must be >= 1");
     } else if (!strcmp(key, "cgal-max-n")) o->cgal_max_n = parse_u64(key, val);
+    else if (!strcmp(key, "max-n")) {
+        str_list l;
+        split_list(val, &l);
+        o->max_n_variant.n = o->max_n.n = 0;
+        for (int i = 0; i < l.n; i++) {
+            char *c = strchr(l.v[i], '=');
+            if (!c || c == l.v[i]) die_usage("--max-n: '%s' is not VARIANT=N", l.v[i]);
+            *c = 0;
+            o->max_n_variant.v[o->max_n_variant.n++] = l.v[i];
+            u64_push(&o->max_n, parse_u64(key, c + 1), key);
+        }
+    }
     else if (!strcmp(key, "out")) snprintf(o->out, sizeof o->out, "%s", val);
     else if (!strcmp(key, "shard")) {
         int i, n;

@@ -4,7 +4,7 @@
 **
 ** Spec file format: one "key = value" per line, keys as the long flags
 ** without "--" (family, n, r, holes, k, variant, weights, seeds, seeds-count,
-** repeats, cgal-max-n, time-limit, mem-limit, validate, jobs, shard, resume,
+** repeats, cgal-max-n, max-n, time-limit, mem-limit, validate, jobs, shard, resume,
 ** quiet, qsort-ref, out, self-test); '#' starts a comment (to the end of the line);
 ** blank lines are ignored; spaces and tabs around keys and values are
 ** dropped; a key without '=' is a boolean flag set to true; "spec" is

@@ -221,6 +221,13 @@ check "holes: the default is 0" \
     '$BENCH --family star --n 50 --dry-run | grep -qx "0 naive,star,50,-1,0,,unit,1,0"'
 check "holes: a bad value is a usage error (64)" \
     '$BENCH --family holes --n 40 --holes x --dry-run 2>/dev/null; [ $? = 64 ]'
+check "max-n: a variant named there is left out above its n, the others stay" \
+    '[ "$($BENCH --family star --n 50,100 --variant naive,deforming --max-n deforming=60 --dry-run | cut -d" " -f2 | cut -d, -f1,3 | tr "\n" " ")" = "naive,50 deforming,50 naive,100 " ]'
+check "max-n: a value without VARIANT=N is a usage error (64)" \
+    '$BENCH --family star --n 50 --max-n deforming --dry-run 2>/dev/null; [ $? = 64 ]'
+printf 'family = star\nn = 50, 100\nvariant = naive, deforming\nmax-n = deforming=60\n' > "$T/maxn.spec"
+check "max-n: spec key" \
+    '[ "$($BENCH --spec $T/maxn.spec --dry-run | wc -l)" = 3 ]'
 drop_holes "$T/full.csv" "$T/legacy.csv"
 check "legacy CSV (no holes column): resume of the finished sweep runs nothing" \
     '$BENCH "${sweep[@]}" --resume --dry-run --out $T/legacy.csv | wc -l | grep -qx 0'

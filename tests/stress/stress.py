@@ -13,7 +13,9 @@ every variant (bin/wskel --check, a time limit per run):
   naive                 must pass --check (exit 1: the maker made an invalid
                         polygon: dropped and counted, not a failure)
   arrangement --k 1, arrangement --k max, monotone, motorcycle (equal
-  weights only: its refusal of other weights is n/a)
+  weights only: its refusal of other weights is n/a), deforming (positive
+  weights here; an input it hands to the reference is 'fallback', counted,
+  not a failure)
                         must pass --check and be naive's skeleton
                         (testlib.same_skeleton: 1e-7 of the diagonal, times
                         over the smallest weight); monotone's refusal "not
@@ -74,7 +76,8 @@ VARIANTS = [("naive", ["--variant", "naive"]),
             ("arrangement-k1", ["--variant", "arrangement", "--k", "1"]),
             ("arrangement-kmax", ["--variant", "arrangement", "--k", "max"]),
             ("monotone", ["--variant", "monotone"]),
-            ("motorcycle", ["--variant", "motorcycle"])]
+            ("motorcycle", ["--variant", "motorcycle"]),
+            ("deforming", ["--variant", "deforming"])]
 VARIANT_ARGS = dict(VARIANTS)
 OUTCOMES = ["pass", "fallback", "exit2", "exit3", "differs", "timeout", "crash", "refused", "other",
             "n/a",

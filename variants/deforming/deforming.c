@@ -78,6 +78,16 @@ static wk_status df_start(df_state *D) {
     }
     if (!(D->wmax > 0)) D->wmax = 1; /* every edge a wall: times are heights */
     double scale = wk_polygon_scale(P);
+    /* With positive weights every point of P is within scale of every
+    ** edge's line, so the wavefront has vanished by scale / wmin: a vertex
+    ** alive after twice that lost an event (the run fails, and the input
+    ** goes to the reference) rather than doubling the step to infinity. */
+    if (!D->nonpositive) {
+        double wmin = INFINITY;
+        for (uint32_t e = 0; e < P->n; e++)
+            if (P->w[e] < wmin) wmin = P->w[e];
+        D->t_vanish = 2 * scale / wmin;
+    }
     D->eps_d = R->opt.tol_scale * WK_TOL_REL * scale;
     D->eps_t = WK_TOL_TIME * D->eps_d / D->wmax;
     if (wk_skeleton_new(R, P, &D->S) != WK_OK) return R->err.code;
@@ -139,6 +149,11 @@ static wk_status df_simulate(df_state *D) {
     while (D->n_alive > 0 && !(H > 0 && D->t >= H)) {
         double te;
         if (H > 0 && D->t + D->dt > H) D->dt = H - D->t;
+        if (D->t_vanish > 0 && D->t > D->t_vanish)
+            return WK_FAIL(R, WK_EALGO, D->P->name, 0,
+                           "deforming: %u vertices still alive at t = %.17g, after the wavefront "
+                           "must have vanished (t <= %.17g)",
+                           D->n_alive, D->t, D->t_vanish);
         if (df_predict(D, &te) != WK_OK) return R->err.code;
         if (D->n_ev == 0) {
             wk_count(R, WK_VC_event_free_steps, 1);

@@ -27,6 +27,7 @@
     X(corrections, "steps corrected back to the time of their earliest event")                    \
     X(edge_swaps, "edge collapses found by an edge swap")                                         \
     X(penetrations, "edge splits found by a vertex penetrating a piece")                          \
+    X(merges, "parts of the wavefront joined by a vertex reaching a piece from the swept side")    \
     X(pair_tests, "vertex-piece pairs tested for penetration (after the grid)")                   \
     X(event_points, "points where events were resolved")                                          \
     X(reference_fallbacks, "inputs handed to the reference variant (own result not certified)")
@@ -44,9 +45,13 @@ typedef struct df_vertex {
     uint8_t alive;
 } df_vertex;
 
-/* An event a step found: a collapse of the piece a -> next(a) (b unused) or
-** the penetration of vertex a through the piece b -> next(b). */
-typedef enum df_event_kind { DF_COLLAPSE = 0, DF_PENETRATION = 1 } df_event_kind;
+/* An event a step found: a collapse of the piece a -> next(a) (b unused),
+** the penetration of vertex a through the piece b -> next(b) from the
+** unswept side (the region between them closes: it splits), or a merge:
+** vertex a reaching the piece b -> next(b) from the swept side (only with
+** weights <= 0: the swept region between them closes, the unswept region
+** joins; 004 Fig. 11b). */
+typedef enum df_event_kind { DF_COLLAPSE = 0, DF_PENETRATION = 1, DF_MERGE = 2 } df_event_kind;
 typedef struct df_event {
     double t;
     uint32_t kind, a, b;
@@ -61,6 +66,8 @@ typedef struct df_state {
     double eps_d;         /* distance tolerance (tolerance.h policy) */
     double eps_t;         /* events within this of the earliest are one group */
     double wmax;          /* largest |weight| (1 if every edge is a wall) */
+    double t_vanish;      /* positive weights, no height: every vertex has
+                             ended by then (0: no such bound) */
     bool nonpositive;     /* some weight is <= 0 */
     double t;             /* present */
     double dt;            /* the next step's increment (the step-size policy) */

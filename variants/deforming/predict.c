@@ -122,31 +122,76 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     return push_event(D, te, DF_COLLAPSE, a, WK_NONE);
 }
 
+static double dist2(wk_point a, wk_point b) {
+    return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y);
+}
+
+/* Two vertices within the contact distance now that were so when the
+** younger was born came out of one point (an event point resolved
+** already, or input vertices closer than the contact distance): no new
+** contact between a vertex and the piece that ends at the other.  Two
+** that came together since (vertex-on-vertex; the far ends of a region
+** collapsing along its whole length, as in integer-weighted combs) meet
+** now: skipping them would lose the event and leave a spike alive. */
+static bool together_since_birth(const df_vertex *V, const df_vertex *W, double c2) {
+    double tb = V->t0 > W->t0 ? V->t0 : W->t0;
+    return dist2(df_pos(V, tb), df_pos(W, tb)) <= c2;
+}
+
+/* A vertex p reaching the line of the piece a -> next(a) at te (004 eq.
+** 28-30 on g's own coefficients, see test_swap): an event of the given
+** kind if p lies within the piece's extent then and did not come out of an
+** end of the piece (see together_since_birth). */
+static wk_status contact(df_state *D, uint32_t p, uint32_t a, double t, double t1, double te,
+                         double eps_c, uint32_t kind) {
+    const df_vertex *V = &D->v[p], *A = &D->v[a], *B = &D->v[A->next];
+    const wk_offset_line *L = &D->L[A->eout];
+    wk_point p0 = df_pos(V, t), a0 = df_pos(A, t), b0 = df_pos(B, t);
+    double c2 = eps_c * eps_c;
+    if ((dist2(p0, a0) <= c2 && together_since_birth(V, A, c2)) ||
+        (dist2(p0, b0) <= c2 && together_since_birth(V, B, c2)))
+        return WK_OK;
+    if (te < t) te = t;
+    if (te > t1) te = t1;
+    wk_point q = df_pos(V, te), qa = df_pos(A, te), qb = df_pos(B, te);
+    double s = L->ux * (q.x - qa.x) + L->uy * (q.y - qa.y);
+    double len = L->ux * (qb.x - qa.x) + L->uy * (qb.y - qa.y);
+    if (s < -eps_c || s > len + eps_c) return WK_OK;
+    /* A vertex reaching the near end of the piece after its own (or before
+    ** it) reaches it along its own piece as that piece collapses: the edge
+    ** swap of that piece, not a merge (seen from behind, such a vertex
+    ** looks like one). */
+    if (kind == DF_MERGE && ((a == V->next && s <= eps_c) || (A->next == V->prev && s >= len - eps_c)))
+        return WK_OK;
+    return push_event(D, te, kind, p, a);
+}
+
 /* Penetration of vertex p through the piece a -> next(a) within [t, t1]. */
 static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t, double t1,
                                   double eps_c) {
     const df_vertex *A = &D->v[a];
     if (p == a || p == A->next) return WK_OK;
-    const df_vertex *V = &D->v[p], *B = &D->v[A->next];
+    const df_vertex *V = &D->v[p];
     const wk_offset_line *L = &D->L[A->eout];
     double g0 = wk_offset_distance(L, df_pos(V, t), t);
     double g1 = wk_offset_distance(L, df_pos(V, t1), t1);
     double rate = L->nx * V->v.x + L->ny * V->v.y - L->w;
     double speed = fabs(V->v.x) + fabs(V->v.y) + fabs(L->w);
-    /* From the outside (004 Fig. 11b): with outward edges two parts of the
-    ** wavefront can meet across the swept region, which this variant does
-    ** not resolve: it says so rather than answer wrongly. */
-    if (D->nonpositive && g0 < -eps_c && rate > WK_APPROACH_REL * speed && g1 >= 0) {
-        double tx = root(L->nx, L->ny, V, NULL, L->c, rate);
-        wk_point q = df_pos(V, tx), qa = df_pos(A, tx), qb = df_pos(B, tx);
-        double s = L->ux * (q.x - qa.x) + L->uy * (q.y - qa.y);
-        double len = L->ux * (qb.x - qa.x) + L->uy * (qb.y - qa.y);
-        if (s > eps_c && s < len - eps_c)
-            return WK_FAIL(D->R, WK_EALGO, D->P->name, 0,
-                           "deforming: the wavefront meets itself from outside (a vertex reaches "
-                           "the piece of edge %u across the swept region at t = %.17g): not "
-                           "supported",
-                           wk_polygon_input_edge(D->P, A->eout), tx);
+    /* From the outside (004 Fig. 11b, "from outside inside"): with outward
+    ** edges two parts of the wavefront can meet across the swept region
+    ** (the exterior between them closes).  The mirror of the contact
+    ** below: the vertex is on the swept side of the line (or on it),
+    ** approaching, and one of its own pieces leaves it into the swept side
+    ** or along the line (else it touches the line with its back).  Only
+    ** with weights <= 0: with positive weights the unswept region only
+    ** shrinks, so a vertex never reaches a piece from behind. */
+    if (D->nonpositive && g0 <= eps_c && rate > WK_APPROACH_REL * speed && g1 >= 0) {
+        const wk_offset_line *Li = &D->L[V->ein], *Lo = &D->L[V->eout];
+        if (L->nx * Lo->ux + L->ny * Lo->uy > WK_PARALLEL_SIN &&
+            -(L->nx * Li->ux + L->ny * Li->uy) > WK_PARALLEL_SIN)
+            return WK_OK;
+        return contact(D, p, a, t, t1, g0 >= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate),
+                       eps_c, DF_MERGE);
     }
     /* approaching from the inside (the wavefront is on the inner side of
     ** each of its pieces) and on the line by t1 */
@@ -161,22 +206,21 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     if (L->nx * Lout->ux + L->ny * Lout->uy < -WK_PARALLEL_SIN &&
         -(L->nx * Lin->ux + L->ny * Lin->uy) < -WK_PARALLEL_SIN)
         return WK_OK;
-    /* A vertex that sits on an end of the piece now was resolved with it
-    ** (both came out of the last event point): not a new contact. */
-    wk_point p0 = df_pos(V, t), a0 = df_pos(A, t), b0 = df_pos(B, t);
-    double c2 = eps_c * eps_c;
-    if ((p0.x - a0.x) * (p0.x - a0.x) + (p0.y - a0.y) * (p0.y - a0.y) <= c2 ||
-        (p0.x - b0.x) * (p0.x - b0.x) + (p0.y - b0.y) * (p0.y - b0.y) <= c2)
-        return WK_OK;
-    /* 004 eq. 28-30 on g's own coefficients (see test_swap) */
-    double te = g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate);
-    if (te < t) te = t;
-    if (te > t1) te = t1;
-    wk_point q = df_pos(V, te), qa = df_pos(A, te), qb = df_pos(B, te);
-    double s = L->ux * (q.x - qa.x) + L->uy * (q.y - qa.y);
-    double len = L->ux * (qb.x - qa.x) + L->uy * (qb.y - qa.y);
-    if (s < -eps_c || s > len + eps_c) return WK_OK;
-    return push_event(D, te, DF_PENETRATION, p, a);
+    return contact(D, p, a, t, t1, g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate), eps_c,
+                   DF_PENETRATION);
+}
+
+/* The event's configuration at te: a collapsing piece no longer than eps_c,
+** a vertex within eps_c of the piece's line. */
+static bool met_at(const df_state *D, const df_event *E, double te, double eps_c) {
+    const df_vertex *A = &D->v[E->kind == DF_COLLAPSE ? E->a : E->b];
+    const df_vertex *B = &D->v[A->next];
+    const wk_offset_line *L = &D->L[A->eout];
+    if (E->kind == DF_COLLAPSE) {
+        wk_point pa = df_pos(A, te), pb = df_pos(B, te);
+        return L->ux * (pb.x - pa.x) + L->uy * (pb.y - pa.y) <= eps_c;
+    }
+    return fabs(wk_offset_distance(L, df_pos(&D->v[E->a], te), te)) <= eps_c;
 }
 
 static int event_cmp(const df_event *x, const df_event *y) {
@@ -241,7 +285,7 @@ wk_status df_predict(df_state *D, double *t_event) {
             wk_point a0 = df_pos(A, t), a1 = df_pos(A, t1), b0 = df_pos(B, t), b1 = df_pos(B, t1);
             double len = fmax(hypot(b0.x - a0.x, b0.y - a0.y), hypot(b1.x - a1.x, b1.y - a1.y));
             double parts = ceil(len / cell);
-            uint32_t np = parts < 1 ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
+            uint32_t np = !(parts >= 1) ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
             bool big = false;
             for (uint32_t s = 0; s < np && !big; s++) {
                 double f0 = (double)s / np, f1 = (double)(s + 1) / np;
@@ -288,7 +332,7 @@ wk_status df_predict(df_state *D, double *t_event) {
         ** path crosses many cells, its box far more) */
         wk_point p0 = df_pos(V, t), p1 = df_pos(V, t1);
         double parts = ceil(hypot(p1.x - p0.x, p1.y - p0.y) / cell);
-        uint32_t np = parts < 1 ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
+        uint32_t np = !(parts >= 1) ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
         bool all = false;
         for (uint32_t s = 0; s < np && !all; s++) {
             double f0 = (double)s / np, f1 = (double)(s + 1) / np;
@@ -327,13 +371,20 @@ wk_status df_predict(df_state *D, double *t_event) {
     wk_count(R, WK_VC_pair_tests, tests);
     D->last_tests = tests;
     if (D->n_ev == 0) return WK_OK;
-    /* keep the earliest events and those within eps_t of them: one group */
+    /* keep the earliest events and those within eps_t of them: one group;
+    ** but only those whose configuration has met at te within the contact
+    ** distance (a piece's length, a vertex's gap), since eps_t times a
+    ** fast vertex's speed can be far more: a piece that a very fast vertex
+    ** (a long spike's tip) would collapse eps_t later is still long at te,
+    ** and grouping it ended its far vertex at the event point (a fuzz
+    ** finding).  Such an event is found again by the next step. */
     double te = INFINITY;
     for (uint32_t k = 0; k < D->n_ev; k++)
         if (D->ev[k].t < te) te = D->ev[k].t;
     uint32_t kept = 0;
     for (uint32_t k = 0; k < D->n_ev; k++)
-        if (D->ev[k].t <= te + D->eps_t) D->ev[kept++] = D->ev[k];
+        if (D->ev[k].t == te || (D->ev[k].t <= te + D->eps_t && met_at(D, &D->ev[k], te, eps_c)))
+            D->ev[kept++] = D->ev[k];
     D->n_ev = kept;
     if (D->n_ev > 1) qsort(D->ev, D->n_ev, sizeof *D->ev, event_cmp_void);
     *t_event = te;

@@ -24,6 +24,13 @@
 **      the in-ray's edge and the out-ray's edge (equal directions: the
 **      out-ray first, so a zero-width sliver between two antiparallel
 **      pieces stays one wedge, closed below as a two-vertex cycle);
+**      where the wavefront merges (a vertex reached a piece from the swept
+**      side, weights <= 0), the mirror: each in-ray and the out-ray after
+**      it bound one wedge of the swept region, which closes, and the new
+**      vertex turns from the one to the other (equal directions: the
+**      in-ray first, so that a zero-width swept sliver between two
+**      antiparallel pieces closes the same way); a point where the region
+**      splits and joins at once pairs as a split;
 **   4. linking: a new vertex is linked to the vertex at the far end of its
 **      rays (an untouched vertex, or the new vertex of the ray's other end
 **      at another event point);
@@ -45,6 +52,15 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* What met at an event point: a penetration from the unswept side (the
+** region splits there) and a merge (the region joins there) pair the rays
+** differently, see 3. above. */
+/* atan2's range is (-pi, pi]; M_PI is not C11 */
+#define DF_PI 3.14159265358979323846
+
+#define DF_POINT_SPLIT 1u
+#define DF_POINT_MERGE 2u
+
 typedef struct df_cut {
     double s;       /* position along the piece */
     uint32_t order; /* 0: the piece's start, 1: interior, 2: its end */
@@ -53,18 +69,22 @@ typedef struct df_cut {
 
 typedef struct df_ray {
     double angle;
+    double lateral;      /* how far clockwise of X the ray's line was just
+                            before te, per time (ties of angle, see ray_cmp) */
     uint32_t k, edge;
     uint32_t out;        /* 1: leaves X along +u(edge); 0: arrives (-u) */
     uint32_t far_vertex; /* untouched vertex at the other end, or WK_NONE */
     uint32_t far_ray;    /* else the ray at the other end's event point */
     uint32_t newv;
+    uint32_t first;      /* sorts first among rays of one direction */
 } df_ray;
 
 struct df_resolve_scratch {
     wk_point *cx;      /* event points */
     uint32_t *cpar;    /* union-find parent */
     uint32_t *cnode;   /* skeleton node, WK_NONE until needed */
-    uint32_t n_cl, cap_cx, cap_cpar, cap_cnode;
+    uint32_t *ckind;   /* DF_POINT_* bits of the events found at the point */
+    uint32_t n_cl, cap_cx, cap_cpar, cap_cnode, cap_ckind;
     uint32_t *mlist;   /* members, in the order found */
     uint32_t n_m, cap_mlist;
     uint32_t *split;   /* pairs (piece start, event point) */
@@ -86,6 +106,7 @@ void df_resolve_free(df_state *D) {
     WK_FREE_ARRAY(R, S->cx, S->cap_cx);
     WK_FREE_ARRAY(R, S->cpar, S->cap_cpar);
     WK_FREE_ARRAY(R, S->cnode, S->cap_cnode);
+    WK_FREE_ARRAY(R, S->ckind, S->cap_ckind);
     WK_FREE_ARRAY(R, S->mlist, S->cap_mlist);
     WK_FREE_ARRAY(R, S->split, S->cap_split);
     WK_FREE_ARRAY(R, S->pieces, S->cap_pieces);
@@ -118,11 +139,13 @@ static wk_status point_at(df_state *D, wk_point X, double eps_c, uint32_t *k) {
     wk_run *R = D->R;
     if (WK_GROW(R, S->cx, S->cap_cx, S->n_cl + 1) != WK_OK ||
         WK_GROW(R, S->cpar, S->cap_cpar, S->n_cl + 1) != WK_OK ||
-        WK_GROW(R, S->cnode, S->cap_cnode, S->n_cl + 1) != WK_OK)
+        WK_GROW(R, S->cnode, S->cap_cnode, S->n_cl + 1) != WK_OK ||
+        WK_GROW(R, S->ckind, S->cap_ckind, S->n_cl + 1) != WK_OK)
         return R->err.code;
     S->cx[S->n_cl] = X;
     S->cpar[S->n_cl] = S->n_cl;
     S->cnode[S->n_cl] = WK_NONE;
+    S->ckind[S->n_cl] = 0;
     *k = S->n_cl++;
     return WK_OK;
 }
@@ -159,7 +182,11 @@ static wk_status add_ray(df_state *D, uint32_t k, uint32_t edge, uint32_t out, u
     const wk_offset_line *L = &D->L[edge];
     double dx = out ? L->ux : -L->ux, dy = out ? L->uy : -L->uy;
     dy += 0.0; /* -0.0 would put a direction of angle pi at -pi */
-    S->rays[S->n_r] = (df_ray){atan2(dy, dx), k, edge, out, far_vertex, WK_NONE, WK_NONE};
+    /* the line's offset at te - dt from X, on the clockwise normal of the
+    ** ray's direction (dy, -dx): -w n . (dy, -dx) dt */
+    double lateral = -L->w * (L->nx * dy - L->ny * dx) + 0.0;
+    S->rays[S->n_r] =
+        (df_ray){atan2(dy, dx), lateral, k, edge, out, far_vertex, WK_NONE, WK_NONE, out};
     *id = S->n_r++;
     return WK_OK;
 }
@@ -172,13 +199,20 @@ static int cut_cmp(const void *x, const void *y) {
     return a->k < b->k ? -1 : a->k > b->k;
 }
 
-/* Sort rays by event point, then counter-clockwise; equal directions put
-** the out-ray first (see 3. above), then by edge. */
+/* Sort rays by event point, then counter-clockwise.  Rays of one
+** direction lie on parallel lines through X; just before te these lines
+** were apart, and seen from X a line further clockwise is earlier
+** counter-clockwise: so equal directions sort by that offset (for two
+** antiparallel pieces this puts the out-ray first if weights are
+** positive, the in-ray if negative: see 3. above).  Lines that stay
+** together (parallel, same speed) put the out-ray first (the in-ray at a
+** merge point), then sort by edge. */
 static int ray_cmp(const void *x, const void *y) {
     const df_ray *a = x, *b = y;
     if (a->k != b->k) return a->k < b->k ? -1 : 1;
     if (a->angle != b->angle) return a->angle < b->angle ? -1 : 1;
-    if (a->out != b->out) return a->out > b->out ? -1 : 1;
+    if (a->lateral != b->lateral) return a->lateral > b->lateral ? -1 : 1;
+    if (a->first != b->first) return a->first > b->first ? -1 : 1;
     return a->edge < b->edge ? -1 : a->edge > b->edge;
 }
 
@@ -332,10 +366,11 @@ static wk_status resolve(df_state *D, double te) {
             wk_point X = df_pos(&D->v[E->a], te);
             if (point_at(D, X, eps_c, &k) != WK_OK || add_member(D, E->a, k) != WK_OK)
                 return R->err.code;
+            S->ckind[k] |= E->kind == DF_MERGE ? DF_POINT_MERGE : DF_POINT_SPLIT;
             if (WK_GROW(R, S->split, S->cap_split, S->n_split + 2) != WK_OK) return R->err.code;
             S->split[S->n_split++] = E->b;
             S->split[S->n_split++] = k;
-            wk_notify_event(R, WK_VC_penetrations,
+            wk_notify_event(R, E->kind == DF_MERGE ? WK_VC_merges : WK_VC_penetrations,
                             &(wk_event){te, X.x + D->o.x, X.y + D->o.y, E->a, E->b, WK_NONE});
         }
     }
@@ -380,8 +415,31 @@ static wk_status resolve(df_state *D, double te) {
     for (uint32_t i = 0; i < S->n_p; i++)
         if (cut_piece(D, S->pieces[i], te) != WK_OK) return R->err.code;
     /* 3. pairing; ray ids change with the sort, so far_ray is mapped */
-    for (uint32_t i = 0; i < S->n_r; i++) S->rays[i].newv = i; /* old id, for now */
+    /* the kinds of the merged points go to their roots */
+    for (uint32_t k = 0; k < S->n_cl; k++) S->ckind[find(S, k)] |= S->ckind[k];
+    for (uint32_t i = 0; i < S->n_r; i++) {
+        S->rays[i].newv = i; /* old id, for now */
+        if (S->ckind[S->rays[i].k] == DF_POINT_MERGE) S->rays[i].first = !S->rays[i].out;
+        /* a direction just below pi is one with those just above -pi */
+        if (S->rays[i].angle > DF_PI - WK_PARALLEL_SIN) S->rays[i].angle -= 2 * DF_PI;
+    }
     if (S->n_r > 1) qsort(S->rays, S->n_r, sizeof *S->rays, ray_cmp); /* rays may be NULL when empty */
+    /* Directions within WK_PARALLEL_SIN of each other are one (lines the
+    ** engine calls parallel; their order is the rounding's): each run of
+    ** them takes its first ray's angle and sorts again, by the lines'
+    ** offsets just before te (ray_cmp), as exactly parallel ones do. */
+    bool runs = false;
+    for (uint32_t i = 1; i < S->n_r; i++) {
+        uint32_t j = i;
+        while (j < S->n_r && S->rays[j].k == S->rays[i - 1].k &&
+               S->rays[j].angle - S->rays[i - 1].angle <= WK_PARALLEL_SIN) {
+            runs |= S->rays[j].angle != S->rays[i - 1].angle;
+            S->rays[j].angle = S->rays[i - 1].angle;
+            j++;
+        }
+        if (j > i) i = j - 1;
+    }
+    if (runs) qsort(S->rays, S->n_r, sizeof *S->rays, ray_cmp);
     if (WK_GROW(R, S->cuts, S->cap_cuts, S->n_r / 2 + 1) != WK_OK) return R->err.code;
     uint32_t *where = WK_NEW_ARRAY(R, uint32_t, S->n_r + 1);
     if (!where) return R->err.code;
@@ -398,12 +456,26 @@ static wk_status resolve(df_state *D, double te) {
             return WK_FAIL(R, WK_EALGO, D->P->name, 0,
                            "deforming: %u rays leave and %u arrive at an event point at t = %.17g",
                            outs, hi - lo - outs, te);
+        uint32_t kind = S->ckind[find(S, k)];
+        bool merge = kind == DF_POINT_MERGE;
         uint32_t node;
         if (node_of(D, k, te, &node) != WK_OK) return R->err.code;
-        for (uint32_t j = lo; j < hi; j++) {
-            if (!S->rays[j].out) continue;
-            uint32_t i = j + 1 == hi ? lo : j + 1;
-            if (S->rays[i].out)
+        for (uint32_t jj = lo; jj < hi; jj++) {
+            /* j: the out-ray of the new vertex, i: its in-ray */
+            uint32_t j = jj, i = jj + 1 == hi ? lo : jj + 1;
+            if (merge) {
+                if (S->rays[jj].out) continue;
+                j = i;
+                i = jj;
+                if (!S->rays[j].out)
+                    return WK_FAIL(R, WK_EALGO, D->P->name, 0,
+                                   "deforming: two pieces arrive at a merge point side by side at "
+                                   "t = %.17g",
+                                   te);
+            } else if (!S->rays[j].out) {
+                continue;
+            }
+            if (!merge && S->rays[i].out)
                 return WK_FAIL(R, WK_EALGO, D->P->name, 0,
                                "deforming: two pieces leave an event point side by side at t = %.17g",
                                te);
