@@ -135,6 +135,16 @@
 ** pass another).  1000 times eps_d: what the simulation leaves behind is
 ** far inside it. */
 #define WK_VALIDATE_TOL_REL 1e-6
+/* Two valid skeletons of one polygon are the same skeleton (the variants
+** fuzz target's oracle, tests/same_skeleton.h) when they agree after nodes
+** within WK_SAME_SKELETON_TOL_REL * scale of each other (and within that
+** over their faces' weight in time) are merged and the zero-length arcs
+** this leaves are dropped.  The validator's tolerance: each skeleton is
+** certified to it, so below it two valid skeletons may resolve a feature
+** differently; the fuzz finding of a needle 9e6 long beside unit-sized
+** parts (features 1.1e-7 of the scale) has valid skeletons of naive and
+** monotone that agree at 1e-6 and differ at 1e-7 of the scale. */
+#define WK_SAME_SKELETON_TOL_REL WK_VALIDATE_TOL_REL
 /* The face areas must sum to the polygon's area within this relative error
 ** (each face's area is a shoelace sum over nodes constructed to ~eps_d). */
 #define WK_VALIDATE_AREA_REL 1e-6
