@@ -8,10 +8,12 @@ Runs every input through bin/wskel --check --verbose with every variant
 (ok NODES/ARCS, mismatch, unsupported, ealgo, invalid, timeout, crash) and
 whether it passes (every variant valid and naive's skeleton, or
 unsupported).  "mismatch": a valid skeleton that is not naive's as the fuzz
-target compares them: scripts/compare_skeletons.py with the tolerance
-WK_SAME_SKELETON_TOL_REL (engine/tolerance.h, 1e-6 of the input's
-bounding-box diagonal) and its weight-aware times; node and arc counts may
-differ (zero-length arcs, nodes merged within the tolerance).  Inputs with the same outcome and messages are one group; the
+target compares them (tests/same_skeleton.h, in Python testlib.same_skeleton):
+nodes within WK_SAME_SKELETON_TOL_REL (engine/tolerance.h, 1e-6) of the
+input's bounding-box diagonal, and in time within that over their faces'
+weight (read off the skeletons, scripts/compare_skeletons.py's
+face_weights), merged; node and arc counts may differ (zero-length arcs,
+nodes merged within the tolerance).  Inputs with the same outcome and messages are one group; the
 smallest of each group is named.  With --out, each group's smallest input is
 written to DIR as a .wpoly (comment lines dropped, the polygon's lines kept
 byte for byte; GraphML converted with Python's shortest round-trip repr)
@@ -29,7 +31,9 @@ import xml.etree.ElementTree as ET
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 WSKEL = os.path.join(ROOT, "bin", "wskel")
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
+sys.path.insert(0, os.path.join(ROOT, "tests"))
 import compare_skeletons as cs  # noqa: E402
+import testlib  # noqa: E402
 
 # WK_SAME_SKELETON_TOL_REL of engine/tolerance.h (the fuzz target's oracle).
 SAME_TOL_REL = 1e-6
@@ -68,8 +72,9 @@ def same(a, b):
     xs = [v[0] for v in a["nodes"][:n]]
     ys = [v[1] for v in a["nodes"][:n]]
     tol = SAME_TOL_REL * math.hypot(max(xs) - min(xs), max(ys) - min(ys))
-    r = cs.compare(a, b, tol)
-    return r.identical, r.summary()
+    wa, wb = cs.face_weights(a), cs.face_weights(b)
+    w = [x if y is None else y if x is None else min(x, y) for x, y in zip(wa, wb)]
+    return testlib.same_skeleton(a, b, tol, tol, [1.0 if x is None else x for x in w])
 
 
 def polygon_lines(path):
