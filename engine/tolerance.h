@@ -200,10 +200,16 @@
 
 /* A static ray hits a wavefront piece when its parameter along the piece
 ** is in [-WK_RAY_PIECE_SLACK, 1 + WK_RAY_PIECE_SLACK] (rounding of the
-** crossing), at least WK_RAY_AHEAD_REL * eps_d ahead of its origin (so a ray
-** does not hit the piece it starts on). */
+** crossing), and not more than WK_RAY_BEHIND_SLACK * eps_d behind the
+** ray's start (the ray's own vertex's pieces are left out by the callers).
+** A piece that close to a reflex vertex is a contact, which the reference's
+** split test takes at once (it accepts a vertex up to eps_d behind a line).
+** The bar was 1e-3 eps_d *ahead*: a fuzz finding, a pinch 1e-6 wide with
+** eps_d = 0.43 (tests/data/fuzz/ealgo_arrangement_pinch.wpoly), put the
+** other side's piece 1e-6 ahead of the vertex, the segment finder never
+** met it and the vertex was left alive (arrangement exit 2). */
 #define WK_RAY_PIECE_SLACK 1e-12
-#define WK_RAY_AHEAD_REL 1e-3
+#define WK_RAY_BEHIND_SLACK 1.0
 /* A hit within WK_RAY_END_SNAP of a piece's end (as a fraction of the piece)
 ** is at the end vertex: ambiguous, the ray is shot again
 ** WK_RAY_RESHOOT_DELAY * eps_t later, when the vertex has moved off it. */
