@@ -135,6 +135,16 @@
 ** pass another).  1000 times eps_d: what the simulation leaves behind is
 ** far inside it. */
 #define WK_VALIDATE_TOL_REL 1e-6
+/* Two valid skeletons of one polygon are the same skeleton (the variants
+** fuzz target's oracle, tests/same_skeleton.h) when they agree after nodes
+** within WK_SAME_SKELETON_TOL_REL * scale of each other (and within that
+** over their faces' weight in time) are merged and the zero-length arcs
+** this leaves are dropped.  The validator's tolerance: each skeleton is
+** certified to it, so below it two valid skeletons may resolve a feature
+** differently; the fuzz finding of a needle 9e6 long beside unit-sized
+** parts (features 1.1e-7 of the scale) has valid skeletons of naive and
+** monotone that agree at 1e-6 and differ at 1e-7 of the scale. */
+#define WK_SAME_SKELETON_TOL_REL WK_VALIDATE_TOL_REL
 /* The face areas must sum to the polygon's area within this relative error
 ** (each face's area is a shoelace sum over nodes constructed to ~eps_d). */
 #define WK_VALIDATE_AREA_REL 1e-6
@@ -190,10 +200,16 @@
 
 /* A static ray hits a wavefront piece when its parameter along the piece
 ** is in [-WK_RAY_PIECE_SLACK, 1 + WK_RAY_PIECE_SLACK] (rounding of the
-** crossing), at least WK_RAY_AHEAD_REL * eps_d ahead of its origin (so a ray
-** does not hit the piece it starts on). */
+** crossing), and not more than WK_RAY_BEHIND_SLACK * eps_d behind the
+** ray's start (the ray's own vertex's pieces are left out by the callers).
+** A piece that close to a reflex vertex is a contact, which the reference's
+** split test takes at once (it accepts a vertex up to eps_d behind a line).
+** The bar was 1e-3 eps_d *ahead*: a fuzz finding, a pinch 1e-6 wide with
+** eps_d = 0.43 (tests/data/fuzz/ealgo_arrangement_pinch.wpoly), put the
+** other side's piece 1e-6 ahead of the vertex, the segment finder never
+** met it and the vertex was left alive (arrangement exit 2). */
 #define WK_RAY_PIECE_SLACK 1e-12
-#define WK_RAY_AHEAD_REL 1e-3
+#define WK_RAY_BEHIND_SLACK 1.0
 /* A hit within WK_RAY_END_SNAP of a piece's end (as a fraction of the piece)
 ** is at the end vertex: ambiguous, the ray is shot again
 ** WK_RAY_RESHOOT_DELAY * eps_t later, when the vertex has moved off it. */

@@ -131,9 +131,10 @@ void wk_wf_near_split(wk_wavefront *W, uint32_t v);
 /* lambda where the segment's line meets offset line L at time t; NaN if
 ** they are parallel (|n . u| < WK_ARR_PARALLEL). */
 double wk_wf_ray_on_line(wk_point o, wk_point u, const wk_offset_line *L, double t);
-/* lambda where the ray (lambda > lambda0) meets piece a -> next(a) at time
-** t, or INFINITY; *mu receives the place along the piece (0 .. 1, within
-** WK_RAY_PIECE_SLACK). */
+/* lambda where the ray (lambda > lambda0 - WK_RAY_BEHIND_SLACK * eps_d: a
+** piece that close behind the start is a contact) meets piece a -> next(a)
+** at time t, or INFINITY; *mu receives the place along the piece (0 .. 1,
+** within WK_RAY_PIECE_SLACK). */
 double wk_wf_ray_hit_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32_t a, double t,
                            double lambda0, double *mu);
 /* The first piece the ray (lambda > lambda0) meets at time t: over v's

@@ -30,7 +30,7 @@ double wk_wf_ray_hit_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32
     double lam = (ex * dy - ey * dx) / den;
     *mu = (ex * u.y - ey * u.x) / den;
     if (*mu < -WK_RAY_PIECE_SLACK || *mu > 1 + WK_RAY_PIECE_SLACK ||
-        lam <= lambda0 + wk_wf_eps_d(W) * WK_RAY_AHEAD_REL)
+        lam <= lambda0 - wk_wf_eps_d(W) * WK_RAY_BEHIND_SLACK)
         return INFINITY;
     return lam;
 }

@@ -22,18 +22,27 @@ member of one within tol of some member of the other; the nearest
 representative wins), and the arcs are compared as multisets.  Reported:
 arcs only in A, arcs only in B, face-label mismatches (same ends, different
 {left, right}, or the same faces on the wrong sides), time mismatches
-(matched nodes whose t differ by more than tol, or a merged node whose
-members disagree in t) and counts.
+(matched nodes whose t differ by more than their time tolerance, or a
+merged node whose members disagree in t by more than it) and counts.
 
 The default tolerance is 1e-7 times the diagonal of the bounding box of the
 input vertices (the first n nodes), loose next to wskel's own 1e-9 policy
 because CGAL's Exact_predicates_inexact_constructions_kernel constructs
-event points in plain doubles.  Times are compared with the same tol, which
-is right for unit weights (t is a distance); with weights in [wmin, wmax]
-pass --tol accordingly.
+event points in plain doubles.
 
-Import it to compare dicts: compare(a, b, tol=None) -> CompareResult.
-Stdlib only.
+Times are compared weight-aware: the offset line of edge e moves at speed
+w(e), so a node whose position errs by tol has a time that errs by up to
+tol / w over the weights w of its faces.  A node's time tolerance is tol
+divided by the smallest weight of the faces at it (the left and right faces
+of its arcs; nodes merged into one or matched with each other: the smallest
+over all of them).  wskel-1 files carry no weights, so each face's weight is
+read off the skeleton itself: the distance of its latest node (largest t)
+from the face's input edge line, over that node's t (the smaller estimate
+of A's and B's).  For unit weights that is 1, and the time tolerance tol,
+as before.  compare(..., weights=[w per input edge]) gives them instead.
+
+Import it to compare dicts: compare(a, b, tol=None, weights=None) ->
+CompareResult.  Stdlib only.
 """
 
 import argparse
@@ -42,7 +51,8 @@ import math
 import sys
 from collections import defaultdict
 
-__all__ = ["CompareResult", "SkeletonError", "compare", "default_tol", "load", "main"]
+__all__ = ["CompareResult", "SkeletonError", "compare", "default_tol", "face_weights", "load",
+           "main"]
 
 
 class SkeletonError(ValueError):
@@ -178,6 +188,70 @@ def default_tol(d):
     return max(1e-7 * diag, 64 * mag * 2.0 ** -52)
 
 
+# ------------------------------------------------------------ weights
+
+def _edge_ends(d, n):
+    """(i, j) per input edge i: it runs from input vertex i to j, the next
+    vertex of its ring ("rings" lists the ring sizes; one ring if absent)."""
+    sizes = d.get("rings") or [n]
+    if not (isinstance(sizes, list) and all(isinstance(k, int) and k >= 3 for k in sizes)
+            and sum(sizes) == n):
+        sizes = [n]
+    ends, start = [], 0
+    for k in sizes:
+        ends += [(start + i, start + (i + 1) % k) for i in range(k)]
+        start += k
+    return ends
+
+
+def face_weights(d):
+    """The weight of each face (input edge) of skeleton dict d, estimated
+    from its nodes: distance from the edge's line over t, at the face's node
+    with the largest t > 0.  None where no node tells (or the estimate is not
+    positive: a wall or overhang face)."""
+    n, pts, arcs = _check(d, "skeleton")
+    ends = _edge_ends(d, n)
+    best = [None] * n   # (t, node) per face
+    for a, b, l, r in arcs:
+        for f in (l, r):
+            for v in (a, b):
+                t = pts[v][2]
+                if t > 0 and (best[f] is None or t > best[f][0]):
+                    best[f] = (t, v)
+    out = []
+    for f in range(n):
+        if best[f] is None:
+            out.append(None)
+            continue
+        t, v = best[f]
+        (px, py, _), (qx, qy, _) = pts[ends[f][0]], pts[ends[f][1]]
+        ln = math.hypot(qx - px, qy - py)
+        if ln == 0:
+            out.append(None)
+            continue
+        dist = ((qx - px) * (pts[v][1] - py) - (qy - py) * (pts[v][0] - px)) / ln
+        w = abs(dist) / t
+        out.append(w if w > 0 and math.isfinite(w) else None)
+    return out
+
+
+def _node_weights(n_nodes, arcs, weights):
+    """Per node: the smallest known weight of the faces of its arcs; the
+    smallest known weight overall for a node without one (1 if none)."""
+    known = [w for w in weights if w is not None]
+    fallback = min(known) if known else 1.0
+    nw = [None] * n_nodes
+    for a, b, l, r in arcs:
+        for f in (l, r):
+            w = weights[f]
+            if w is None:
+                continue
+            for v in (a, b):
+                if nw[v] is None or w < nw[v]:
+                    nw[v] = w
+    return [fallback if w is None else w for w in nw]
+
+
 # ------------------------------------------------------------ normalising
 
 class _Grid:
@@ -255,11 +329,13 @@ class _Normal:
 
 # ------------------------------------------------------------- comparing
 
-def compare(a, b, tol=None):
+def compare(a, b, tol=None, weights=None):
     """Compare two wskel-1 skeleton dicts of the same polygon.
 
-    tol: absolute tolerance for positions and times; None selects
-    default_tol(a).  Raises SkeletonError if either dict breaks the contract
+    tol: absolute tolerance for positions; None selects default_tol(a).
+    Times: tol over the smallest weight of a node's faces (weights: one per
+    input edge; None reads them off the skeletons, see face_weights).
+    Raises SkeletonError if either dict breaks the contract
     or the two do not share their n input vertices.  Returns a CompareResult
     whose .identical is the verdict."""
     na, pa, arcs_a = _check(a, "A")
@@ -284,15 +360,27 @@ def compare(a, b, tol=None):
                   "arcs_a": len(arcs_a), "arcs_b": len(arcs_b),
                   "zero_arcs_a": A.zero, "zero_arcs_b": B.zero}
 
-    # All members of a merged node must share one time.
-    for name, S, pts in (("A", A, pa), ("B", B, pb)):
+    # Weight-aware time tolerances: tol / w per node (see the module doc).
+    if weights is None:
+        wa, wb = face_weights(a), face_weights(b)
+        weights = [x if y is None else y if x is None else min(x, y) for x, y in zip(wa, wb)]
+    elif len(weights) != n:
+        raise SkeletonError("%d weights for %d input edges" % (len(weights), n))
+    wn_a = _node_weights(len(pa), arcs_a, weights)
+    wn_b = _node_weights(len(pb), arcs_b, weights)
+    cw_a = [min(wn_a[i] for i in mem) for mem in A.members]
+    cw_b = [min(wn_b[i] for i in mem) for mem in B.members]
+
+    # All members of a merged node must share one time (within tol over its
+    # faces' weight).
+    for name, S, pts, cw in (("A", A, pa, cw_a), ("B", B, pb, cw_b)):
         for c, mem in enumerate(S.members):
             ts = [pts[i][2] for i in mem]
-            if max(ts) - min(ts) > tol:
+            if max(ts) - min(ts) > tol / cw[c]:
                 res.time_mismatches.append({
                     "p": S.rep[c],
-                    "what": "%s merges %d nodes with t from %.17g to %.17g"
-                            % (name, len(mem), min(ts), max(ts))})
+                    "what": "%s merges %d nodes with t from %.17g to %.17g (time tolerance %.3g)"
+                            % (name, len(mem), min(ts), max(ts), tol / cw[c])})
 
     # Match merged nodes: A's cluster -> B's cluster, nearest representative
     # among the B clusters having a member within tol of a member of A's.
@@ -332,9 +420,11 @@ def compare(a, b, tol=None):
         if cb is None:
             continue
         ta, tb = pa[A.members[ca][0]][2], pb[B.members[cb][0]][2]
-        if abs(ta - tb) > tol:
+        tol_t = tol / min(cw_a[ca], cw_b[cb])
+        if abs(ta - tb) > tol_t:
             res.time_mismatches.append({"p": A.rep[ca],
-                                        "what": "A t=%.17g, B t=%.17g" % (ta, tb)})
+                                        "what": "A t=%.17g, B t=%.17g (time tolerance %.3g)"
+                                                % (ta, tb, tol_t)})
 
     # Arcs in one label space: ("b", id) for B's merged nodes and A's matched
     # ones, ("a", id) for A's unmatched ones.  An arc is keyed by its ordered
@@ -399,7 +489,8 @@ def main(argv=None):
     ap.add_argument("a", metavar="A.json")
     ap.add_argument("b", metavar="B.json")
     ap.add_argument("--tol", type=float, default=None,
-                    help="absolute tolerance (default: 1e-7 * bbox diagonal of the input)")
+                    help="absolute tolerance for positions (default: 1e-7 * bbox diagonal of "
+                         "the input); times: tol over the weight of a node's faces")
     ap.add_argument("--verbose", "-v", action="store_true",
                     help="list every difference (default: the first 10 of each kind)")
     args = ap.parse_args(argv)

@@ -8,7 +8,8 @@
 **     no tracked byte;
 **   - every other file is a variant finding: the reader accepts it, and it
 **     passes when every registered variant returns a skeleton the validator
-**     accepts with the node and arc counts of the reference's (naive's), or
+**     accepts and that is the reference's (naive's) in canonical form (as
+**     the variants fuzz target compares them, tests/same_skeleton.h), or
 **     declines it with WK_EUNSUPPORTED (a non-reference variant).  Each
 **     variant runs in a child process with a time limit
 **     (WSKEL_FINDINGS_TIMEOUT seconds, default 30), so a hang or a crash is
@@ -172,9 +173,31 @@ Test(fuzz_findings, reader_findings_are_refused_as_expected) {
 
 /* ---- variant findings ---- */
 
+/* S, a valid skeleton of P by a non-reference variant, against the
+** reference's valid skeleton as the variants fuzz target compares them
+** (tests/same_skeleton.h, merging within WK_SAME_SKELETON_TOL_REL * scale,
+** time tolerance over the faces' weight): out becomes "mismatch WHY" when
+** they differ.  When the reference fails, S is only validated. */
+static void compare_with_reference(const wk_polygon *P, const wk_skeleton *S, char *out,
+                                   size_t size) {
+    wk_run Rr;
+    wk_run_init(&Rr);
+    wk_skeleton *Sr = NULL;
+    if (wk_solve_checked(&Rr, wk_variant_reference(), P, 0, &Sr, NULL, NULL, NULL) == WK_OK) {
+        double tol = WK_SAME_SKELETON_TOL_REL * wk_polygon_scale(P);
+        sk_match m = {.tol = tol, .tol_t = tol, .merge = true, .P = P};
+        char why[900];
+        if (!same_skeleton(Sr, S, m, why, sizeof why))
+            snprintf(out, size, "mismatch %.1000s", why);
+        wk_skeleton_free(&Rr, Sr);
+    }
+    wk_run_close(&Rr);
+}
+
 /* In a child: variant V on the file; writes one line to fd:
-** "ok NODES ARCS", "invalid MSG", "ealgo MSG", "unsupported MSG",
-** "reader MSG" (the reader refused it) or "status NAME MSG". */
+** "ok NODES ARCS", "mismatch WHY" (valid, but not the reference's
+** skeleton), "invalid MSG", "ealgo MSG", "unsupported MSG", "reader MSG"
+** (the reader refused it) or "status NAME MSG". */
 static void child_run(const char *path, const wk_variant *V, int fd) {
     char out[1200], msg[1024];
     wk_run R;
@@ -198,6 +221,8 @@ static void child_run(const char *path, const wk_variant *V, int fd) {
             else
                 snprintf(out, sizeof out, "%s %s", v == WK_EINVALID ? "invalid" : "status",
                          msg);
+            if (v == WK_OK && V != wk_variant_reference())
+                compare_with_reference(P, S, out, sizeof out);
             wk_skeleton_free(&Rv, S);
         } else if (st == WK_EINVALID) { /* the variant checked its own output */
             snprintf(out, sizeof out, "invalid %s", msg);
@@ -297,12 +322,11 @@ Test(fuzz_findings, variant_findings_pass_unless_known, .timeout = 3600) {
         char outcome[512] = "", line[1200], word[32];
         size_t ol = 0;
         /* Each variant's skeleton must pass the validator (through
-        ** wk_solve_checked, the entry point bin/wskel uses).  Node and arc
-        ** counts are not compared with naive's: features below the
-        ** tolerance merge differently (a pass-through node, a zero-length
-        ** arc) in skeletons that scripts/compare_skeletons.py finds
-        ** identical; equality with naive is the stress sweep's and
-        ** tests/test_degenerate.py's, with that tolerance-aware comparison. */
+        ** wk_solve_checked, the entry point bin/wskel uses) and be the
+        ** reference's skeleton in canonical form (compare_with_reference:
+        ** node and arc counts alone differ where features below the
+        ** tolerance merge differently, a pass-through node, a zero-length
+        ** arc). */
         bool pass = true;
         const wk_variant *V;
         for (size_t v = 0; (V = wk_variant_at(v)) != NULL; v++) {

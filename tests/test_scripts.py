@@ -13,6 +13,9 @@
   - regress.py passes identical runs and fails on a changed counter, where
     an empty cell equals only an empty cell;
   - plot_offsets.py writes a PNG from GeoJSON offsets and a skeleton;
+  - compare_skeletons.py compares times weight-aware: a zero-length arc
+    of a weighted skeleton whose ends are tol / 2 apart, with times
+    (tol / 2) / w apart, is one node; times 3 tol / w apart are not;
   - large_report.py (scripts/perf_large.sh's report): the exponent, time /
     qsort and bytes per vertex at 10^6 of rows made with known values, and
     the verdicts against the targets, "not measured" below 10^6.
@@ -543,6 +546,42 @@ def test_plot_offsets_writes_png():
     assert r.returncode == 0, r.stderr
     with open(png, "rb") as f:
         assert f.read(8) == b"\x89PNG\r\n\x1a\n"
+
+
+# ------------------------------------------------------- compare_skeletons.py
+
+def _square(w, centre):
+    """The unit square, weight w on every edge, as a wskel-1 dict whose
+    interior nodes are `centre` (a list of [x, y, t]); arcs to fill in."""
+    return {"format": "wskel-1", "n": 4, "r": 0, "rings": [4],
+            "nodes": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]] + centre, "arcs": []}
+
+
+def test_compare_skeletons_time_tolerance_is_weight_aware():
+    import compare_skeletons as cs
+    w = 0.01
+    a = _square(w, [[0.5, 0.5, 0.5 / w]])
+    a["arcs"] = [[0, 4, 3, 0], [1, 4, 0, 1], [2, 4, 1, 2], [3, 4, 2, 3]]
+    tol = cs.default_tol(a)
+
+    def split(dt):
+        """The centre as two nodes tol / 2 apart joined by a zero-length arc,
+        the second one dt later."""
+        d = tol / 2
+        b = _square(w, [[0.5, 0.5, 0.5 / w], [0.5 + d, 0.5, 0.5 / w + dt]])
+        b["arcs"] = [[0, 4, 3, 0], [1, 5, 0, 1], [2, 5, 1, 2], [3, 4, 2, 3], [4, 5, 0, 2]]
+        return b
+    # tol / 2 along the arc is (tol / 2) / w in time: 50 tol, far above tol
+    same = cs.compare(a, split((tol / 2) / w))
+    assert same.identical, same.summary() + "\n" + "\n".join(same.details())
+    assert same.counts["zero_arcs_b"] == 1, same.summary()
+    assert [round(x, 12) for x in cs.face_weights(a)] == [w] * 4, cs.face_weights(a)
+    # 3 tol / w is more than any position within tol explains
+    off = cs.compare(a, split(3 * tol / w))
+    assert not off.identical and off.time_mismatches, off.summary()
+    # the same with given weights; unit weights make 50 tol a mismatch
+    assert cs.compare(a, split((tol / 2) / w), weights=[w] * 4).identical
+    assert not cs.compare(a, split((tol / 2) / w), weights=[1.0] * 4).identical
 
 
 def main():

@@ -165,7 +165,7 @@ def write_wpoly(path, pts, ws=None, comment=None):
 
 # ---------------------------------------------------------- comparison
 
-def same_skeleton(a, b, tol=None, tol_t=None):
+def same_skeleton(a, b, tol=None, tol_t=None, weights=None):
     """Are the wskel-1 skeleton dicts a and b (of one polygon) the same
     skeleton?  Returns (True, "") or (False, the first difference).
 
@@ -181,7 +181,9 @@ def same_skeleton(a, b, tol=None, tol_t=None):
     Defaults: tol = 1e-7 * the input's bounding-box diagonal, but at least
     64 ulps of the largest coordinate; tol_t = tol (the JSON has no weights:
     times err by position errors over the weight, so pass tol / the smallest
-    weight when weights go below 1)."""
+    weight when weights go below 1).  weights (one per input edge, as
+    sk_match.P of tests/same_skeleton.h): two nodes' time tolerance is
+    tol_t over the smallest weight of the faces at either node."""
     na, nb = a["n"], b["n"]
     if na != nb:
         return False, "%d vs %d input vertices" % (na, nb)
@@ -202,6 +204,18 @@ def same_skeleton(a, b, tol=None, tol_t=None):
     nodes = list(A) + list(B)
     off = len(A)
     par = list(range(len(nodes)))
+    nw = [1.0] * len(nodes)
+    if weights is not None:
+        pos = [w for w in weights if w > 0]
+        wmin = min(pos) if pos else 1.0
+        nw = [math.inf] * len(nodes)
+        for S, o in ((a, 0), (b, off)):
+            for u, v, left, right in S["arcs"]:
+                w = min([weights[f] for f in (left, right) if 0 <= f < len(weights)
+                         and weights[f] > 0] or [math.inf])
+                nw[u + o] = min(nw[u + o], w)
+                nw[v + o] = min(nw[v + o], w)
+        nw = [wmin if math.isinf(w) else w for w in nw]
 
     def find(x):
         while par[x] != x:
@@ -217,7 +231,8 @@ def same_skeleton(a, b, tol=None, tol_t=None):
             for dy in (-1, 0, 1):
                 for k in cells.get((kx + dx, ky + dy), ()):
                     q = nodes[k]
-                    if abs(q[0] - x) <= tol and abs(q[1] - y) <= tol and abs(q[2] - t) <= tol_t:
+                    if (abs(q[0] - x) <= tol and abs(q[1] - y) <= tol
+                            and abs(q[2] - t) <= tol_t / min(nw[i], nw[k])):
                         ri, rk = find(i), find(k)
                         if ri != rk:
                             par[max(ri, rk)] = min(ri, rk)

@@ -5,9 +5,15 @@
 
 Runs every input through bin/wskel --check --verbose with every variant
 (--list-variants) and prints one line per input: each variant's outcome
-(ok NODES/ARCS, unsupported, ealgo, invalid, timeout, crash) and whether it
-passes (every variant valid with naive's node and arc counts, or
-unsupported).  Inputs with the same outcome and messages are one group; the
+(ok NODES/ARCS, mismatch, unsupported, ealgo, invalid, timeout, crash) and
+whether it passes (every variant valid and naive's skeleton, or
+unsupported).  "mismatch": a valid skeleton that is not naive's as the fuzz
+target compares them (tests/same_skeleton.h, in Python testlib.same_skeleton):
+nodes within WK_SAME_SKELETON_TOL_REL (engine/tolerance.h, 1e-6) of the
+input's bounding-box diagonal, and in time within that over their faces'
+weight (read off the skeletons, scripts/compare_skeletons.py's
+face_weights), merged; node and arc counts may differ (zero-length arcs,
+nodes merged within the tolerance).  Inputs with the same outcome and messages are one group; the
 smallest of each group is named.  With --out, each group's smallest input is
 written to DIR as a .wpoly (comment lines dropped, the polygon's lines kept
 byte for byte; GraphML converted with Python's shortest round-trip repr)
@@ -18,10 +24,19 @@ import os
 import re
 import subprocess
 import sys
+import json
+import math
 import xml.etree.ElementTree as ET
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 WSKEL = os.path.join(ROOT, "bin", "wskel")
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+sys.path.insert(0, os.path.join(ROOT, "tests"))
+import compare_skeletons as cs  # noqa: E402
+import testlib  # noqa: E402
+
+# WK_SAME_SKELETON_TOL_REL of engine/tolerance.h (the fuzz target's oracle).
+SAME_TOL_REL = 1e-6
 
 
 def variants():
@@ -30,26 +45,36 @@ def variants():
 
 
 def run(path, variant, timeout):
-    """(kind, detail): kind ok/unsupported/ealgo/invalid/input/timeout/crash."""
+    """(kind, detail, skeleton): kind ok/unsupported/ealgo/invalid/input/
+    timeout/crash; skeleton the wskel-1 dict when ok, else None."""
     try:
         p = subprocess.run([WSKEL, "--variant", variant, "--check", "--verbose", "--format",
-                            "text", path], capture_output=True, timeout=timeout)
+                            "json", path], capture_output=True, timeout=timeout)
     except subprocess.TimeoutExpired:
-        return "timeout", "more than %g s" % timeout
+        return "timeout", "more than %g s" % timeout, None
     err = p.stderr.decode("utf-8", "replace").strip().replace("\n", " | ")
     err = err.replace("wskel: " + path + ":", "").replace(path, "FILE").strip()
     if p.returncode == 0:
-        text = p.stdout.decode()
-        n = re.search(r"^nodes (\d+)", text, re.M)
-        a = re.search(r"^arcs (\d+)", text, re.M)
-        return "ok", "%s/%s" % (n.group(1), a.group(1))
+        d = json.loads(p.stdout.decode())
+        return "ok", "%d/%d" % (len(d["nodes"]), len(d["arcs"])), d
     if p.returncode == 1:
-        return "input", err
+        return "input", err, None
     if p.returncode == 2:
-        return ("unsupported" if "(unsupported by this variant," in err else "ealgo"), err
+        return ("unsupported" if "(unsupported by this variant," in err else "ealgo"), err, None
     if p.returncode == 3:
-        return "invalid", err
-    return "crash", "exit %d: %s" % (p.returncode, err[:300])
+        return "invalid", err, None
+    return "crash", "exit %d: %s" % (p.returncode, err[:300]), None
+
+
+def same(a, b):
+    """(True, "") if b is a's skeleton in canonical form, else (False, why)."""
+    n = a["n"]
+    xs = [v[0] for v in a["nodes"][:n]]
+    ys = [v[1] for v in a["nodes"][:n]]
+    tol = SAME_TOL_REL * math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+    wa, wb = cs.face_weights(a), cs.face_weights(b)
+    w = [x if y is None else y if x is None else min(x, y) for x, y in zip(wa, wb)]
+    return testlib.same_skeleton(a, b, tol, tol, [1.0 if x is None else x for x in w])
 
 
 def polygon_lines(path):
@@ -120,13 +145,17 @@ def main():
     vs = variants()
     groups = {}
     for f in files:
-        res = [(v,) + run(f, v, args.timeout) for v in vs]
-        ref = res[0][2] if res[0][1] == "ok" else None
+        full = [(v,) + run(f, v, args.timeout) for v in vs]
+        ref = full[0][3] if full[0][1] == "ok" else None
+        res = [(v, kind, detail) for v, kind, detail, _ in full]
         summary, ok = [], True
         for i, (v, kind, detail) in enumerate(res):
-            if kind == "ok" and ref is not None and detail != ref:
-                kind = "mismatch"
-                res[i] = (v, kind, "nodes/arcs %s, %s's %s" % (detail, vs[0], ref))
+            if kind == "ok" and ref is not None and i > 0:
+                agree, why = same(ref, full[i][3])
+                if not agree:
+                    kind = "mismatch"
+                    res[i] = (v, kind, "nodes/arcs %s, %s's %s: %s"
+                              % (detail, vs[0], full[0][2], why))
             if kind not in ("ok", "unsupported") or (kind == "unsupported" and v == vs[0]):
                 ok = False
             summary.append("%s=%s" % (v, kind))
