@@ -139,6 +139,11 @@ typedef struct cell_index {
     double th0, dth;        /* angle bins: th0 + [b, b + 1) dth, clamped */
     double cx, cy, rho;     /* the cell's centre and the radius of its disk */
     double *bmin, *bmax;    /* gt */
+    uint32_t *cmin, *cmax;  /* gt: the occupied offset bins of each angle
+                               bin lie in cmin[b] .. cmax[b] (none when
+                               cmin > cmax), so a scan skips the empty
+                               ones (a hub's lines all pass near its centre:
+                               most of the 4 sqrt(k) offset bins are empty) */
     double *trig;           /* 4 gt: cos, sin of bmin and bmax */
     uint32_t *head;         /* gt * gh */
     ix_line *line;          /* cap */
@@ -471,6 +476,8 @@ static void index_free(wk_run *R, cell_index *X) {
     if (!X) return;
     WK_FREE_ARRAY(R, X->bmin, X->gt);
     WK_FREE_ARRAY(R, X->bmax, X->gt);
+    WK_FREE_ARRAY(R, X->cmin, X->gt);
+    WK_FREE_ARRAY(R, X->cmax, X->gt);
     WK_FREE_ARRAY(R, X->trig, (size_t)4 * X->gt);
     WK_FREE_ARRAY(R, X->head, (size_t)X->gt * X->gh);
     WK_FREE_ARRAY(R, X->line, X->cap);
@@ -493,6 +500,8 @@ static wk_status index_add(sim *S, cell_list *L, uint32_t k) {
     uint32_t c = bin_of(h, -X->rho, 2.0 * X->rho / X->gh, X->gh);
     X->line[k] = (ix_line){X->head[b * X->gh + c]};
     X->head[b * X->gh + c] = k;
+    if (c < X->cmin[b]) X->cmin[b] = c;
+    if (c > X->cmax[b]) X->cmax[b] = c;
     if (th < X->bmin[b]) {
         X->bmin[b] = th;
         X->trig[4 * b] = cos(th);
@@ -527,10 +536,13 @@ static wk_status index_build(sim *S, cell_list *L, uint32_t cell) {
     X->rho = 0.5 * hypot(S->cw[0], S->cw[1]);
     X->bmin = WK_NEW_ARRAY(S->R, double, X->gt);
     X->bmax = WK_NEW_ARRAY(S->R, double, X->gt);
+    X->cmin = WK_NEW_ARRAY(S->R, uint32_t, X->gt);
+    X->cmax = WK_NEW_ARRAY(S->R, uint32_t, X->gt);
     X->trig = WK_NEW_ARRAY(S->R, double, (size_t)4 * X->gt);
     X->head = WK_NEW_ARRAY(S->R, uint32_t, (size_t)X->gt * X->gh);
     X->line = WK_NEW_ARRAY(S->R, ix_line, X->cap);
-    if (!X->bmin || !X->bmax || !X->trig || !X->head || !X->line) return WK_ENOMEM;
+    if (!X->bmin || !X->bmax || !X->cmin || !X->cmax || !X->trig || !X->head || !X->line)
+        return WK_ENOMEM;
     double lo = INFINITY, hi = -INFINITY;
     for (uint32_t k = 0; k < L->n; k++) {
         double th, h;
@@ -543,6 +555,8 @@ static wk_status index_build(sim *S, cell_list *L, uint32_t cell) {
     for (uint32_t b = 0; b < X->gt; b++) {
         X->bmin[b] = INFINITY;
         X->bmax[b] = -INFINITY;
+        X->cmin[b] = UINT32_MAX;
+        X->cmax[b] = 0;
     }
     for (size_t q = 0; q < (size_t)X->gt * X->gh; q++) X->head[q] = WK_NONE;
     for (uint32_t k = 0; k < L->n; k++)
@@ -607,6 +621,8 @@ static wk_status cell_scan(sim *S, cell_list *L, uint32_t cell, const geo *gi) {
                 c1 = bin_of(whi, -X->rho, hw, X->gh);
             }
         }
+        if (c0 < X->cmin[b]) c0 = X->cmin[b];
+        if (c1 > X->cmax[b]) c1 = X->cmax[b];
         for (uint32_t c = c0; c <= c1; c++)
             for (uint32_t k = X->head[b * X->gh + c]; k != WK_NONE; k = X->line[k].next)
                 if (test_pair(S, gi, &S->geo[L->e[k]], cell) != WK_OK) return WK_ENOMEM;
