@@ -734,7 +734,9 @@ static wk_status grid_start(sim *S, wk_point lo, wk_point hi) {
     S->slab_end = WK_NEW_ARRAY(S->R, uint32_t, S->r);
     if (!S->cells || !S->geo || !S->slab || !S->slab_end) return WK_ENOMEM;
     for (uint32_t i = 0; i < S->r; i++) S->geo[i] = geo_of(S, i);
-    for (uint32_t c = 0; c < cells; c++) S->cells[c] = (cell_list){NULL, 0, 0, NULL};
+    /* The cells start empty: WK_NEW_ARRAY zeroes them ({NULL, 0, 0, NULL}),
+    ** and a second pass over the refined grid (16 cells per motorcycle on a
+    ** coastline) cost 1-2% of the run. */
     for (uint32_t i = 0; i < S->r; i++) {
         const wk_motorcycle *m = &S->m[i];
         int k = major_axis(m);
