@@ -1,6 +1,6 @@
 # bench.mk: the benchmark targets (included at the end of the Makefile).
 #   make bench     default sweep -> results/latest/ (CSV, plots, fit, REPORT.md)
-#   make curves    the larger sweep -> results/curves/
+#   make curves    the larger sweeps (curves, curves_k, curves_large) -> results/curves/
 #   make regress   fixed sweep, compared with results/baseline/regress.csv
 #   make regress-baseline   re-measure the baseline (commit the result)
 #   make test-bench         the harness's own tests
@@ -24,6 +24,7 @@ curves: $(BENCH_DEPS)
 	@mkdir -p results/curves/plots
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves_k.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
+	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves_large.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
 	$(PY) scripts/fit.py results/curves/curves.csv --json results/curves/fit.json > results/curves/fit.txt && cat results/curves/fit.txt
 	$(PY) scripts/plot.py results/curves/curves.csv results/curves/plots --fit results/curves/fit.json
 	$(PY) scripts/report.py results/curves/curves.csv results/curves/plots results/curves/REPORT.md --fit results/curves/fit.txt --roof $(ROOF_PNG)

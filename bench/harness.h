@@ -85,6 +85,8 @@ typedef struct result {
     uint32_t r, nodes, arcs;
     bool have_counters, have_time, have_cpu, validated;
     double wall_s, cpu_s;
+    double phase_s;        /* the variant's timed phase (wk_variant.phase;
+                              JSON lines only), valid with have_time */
     uint64_t peak_rss, peak_tracked;
     wk_counters c;
     char msg[512];

@@ -156,6 +156,14 @@ static void format_rows(const config *c, const result *r, bool legacy, sbuf *csv
     sb_printf(js, ",\"cpu_s\":");
     if (r->have_cpu) sb_printf(js, "%.9g", r->cpu_s);
     else sb_printf(js, "null");
+    /* The variant's timed phase (wk_variant.phase), in the JSON lines only:
+    ** the CSV's columns stay those of the committed baselines. */
+    sb_printf(js, ",\"phase\":");
+    if (V && wk_variant_phase(V)) sb_json_str(js, wk_variant_phase(V));
+    else sb_printf(js, "null");
+    sb_printf(js, ",\"phase_s\":");
+    if (V && wk_variant_phase(V) && r->have_time) sb_printf(js, "%.9g", r->phase_s);
+    else sb_printf(js, "null");
     sb_printf(js, ",\"peak_rss_bytes\":%llu,\"peak_tracked_bytes\":", (unsigned long long)r->peak_rss);
     if (hc) sb_printf(js, "%llu", (unsigned long long)r->peak_tracked);
     else sb_printf(js, "null");

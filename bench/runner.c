@@ -30,6 +30,7 @@ typedef struct child_rec {
     int what;              /* 0 generation, 1 solve, 2 validation */
     uint32_t n, r, nodes, arcs;
     double wall_s, cpu_s;
+    double phase_s;        /* R.phase_s: the variant's timed phase */
     uint64_t peak_tracked;
     wk_counters c;
     char msg[400];
@@ -165,6 +166,7 @@ static void child_main(const options *o, const config *c, int fd, const char *cg
     rec.status = st;
     rec.wall_s = wall;
     rec.cpu_s = c1 - c0;
+    rec.phase_s = R.phase_s;
     rec.peak_tracked = peak;
     rec.c = R.counters;
     if (S) {
@@ -311,6 +313,7 @@ void run_config(const options *o, const config *c, const char *cgal_bin, result 
             res->c = last.c;
             res->wall_s = last.wall_s;
             res->cpu_s = last.cpu_s;
+            res->phase_s = last.phase_s;
             res->have_time = res->have_cpu = true;
             res->peak_tracked = last.peak_tracked;
             res->nodes = last.nodes;
@@ -333,6 +336,7 @@ void run_config(const options *o, const config *c, const char *cgal_bin, result 
             res->c = last.c;
             res->wall_s = last.wall_s;
             res->cpu_s = last.cpu_s;
+            res->phase_s = last.phase_s;
             res->have_time = res->have_cpu = last.status == WK_OK || last.what == 2;
             res->peak_tracked = last.peak_tracked;
             res->nodes = last.nodes;

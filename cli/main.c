@@ -54,7 +54,9 @@ static const char usage_text[] =
     "  --check-tol REL    the validator's tolerance as a fraction of the bounding-box\n"
     "                     diagonal (default 1e-6; smaller is stricter)\n"
     "  --stats            print counters, time and peak tracked bytes to stderr\n"
-    "                     (with --offset and geojson/wkt also the offsets' time)\n"
+    "                     (with --offset and geojson/wkt also the offsets' time;\n"
+    "                     for a variant with a timed phase, e.g. motorcycle's\n"
+    "                     M(P), phase_s: that phase's share of time_s)\n"
     "  --collinear RULE   parallel edges of different weight meeting collinearly:\n"
     "                     'lower' (default, the lower weight edge survives, as in\n"
     "                     the arrangement paper) or 'higher' (surfer2's default)\n"
@@ -391,6 +393,8 @@ int main(int argc, char **argv) {
         fprintf(stderr, "variant %s  n %u  r %u  nodes %u  arcs %u\n", wk_variant_name(V), P->n, P->r,
                 S->n_nodes, S->n_arcs);
         fprintf(stderr, "time_s %.6f  peak_bytes %zu\n", time_s, peak);
+        if (wk_variant_phase(V))
+            fprintf(stderr, "phase_s %.6f  (%s)\n", R.phase_s, wk_variant_phase(V));
         if (offset_s >= 0)
             fprintf(stderr, "offset_time_s %.6f  (%u offset times)\n", offset_s, n_offsets);
         for (uint32_t j = 0; j < wk_counter_count(V); j++)

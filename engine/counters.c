@@ -76,6 +76,7 @@ const wk_observer wk_observer_counting = {count_event, count_work, NULL};
 const char *wk_variant_name(const wk_variant *V) { return V->name; }
 const char *wk_variant_summary(const wk_variant *V) { return V->summary; }
 unsigned wk_variant_flags(const wk_variant *V) { return V->flags; }
+const char *wk_variant_phase(const wk_variant *V) { return V->phase; }
 
 const char *wk_variant_with_flags(unsigned flags) {
     for (size_t i = 0; wk_variant_at(i); i++)

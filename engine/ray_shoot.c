@@ -264,6 +264,11 @@ bool wk_ray_shoot_brute(const wk_polygon *P, double tol, wk_point o, wk_point u,
     return found;
 }
 
+/* Entries of wk_ray_shoot's memo of tested edges (a power of 2; not a
+** tolerance: 1 KiB of stack cleared per shot against the edge tests it
+** saves). */
+#define RAY_MEMO 256u
+
 bool wk_ray_shoot(const wk_ray_shooter *S, wk_point o, wk_point u, uint32_t from_vertex,
                   wk_ray_hit *hit) {
     const wk_seg_grid *G = &S->G;
@@ -273,14 +278,26 @@ bool wk_ray_shoot(const wk_ray_shooter *S, wk_point o, wk_point u, uint32_t from
         return wk_ray_shoot_brute(S->P, S->tol, o, u, from_vertex, hit);
     wk_ray_hit best = {0};
     bool found = false;
+    /* A long edge is listed in every cell along it, and a ray running
+    ** beside it (a star's notch edges, nearly parallel to the rays of the
+    ** reflex vertices between them) meets it in cell after cell: each edge
+    ** is tested once per shot, as far as this small direct-mapped memo of
+    ** the edges already tested tells (a collision only tests an edge again,
+    ** which offers the same hit: the answer does not depend on the memo). */
+    uint32_t tested[RAY_MEMO];
+    memset(tested, 0xff, sizeof tested);
     uint32_t cx = wk_seg_grid_col(G, o.x), cy = wk_seg_grid_row(G, o.y);
     int sx = (u.x > 0) - (u.x < 0), sy = (u.y > 0) - (u.y < 0);
     /* At most nx + ny cells: each step moves one column or one row, always
     ** the same way. */
     for (;;) {
         uint32_t c = cy * G->nx + cx;
-        for (uint32_t k = G->start[c]; k < G->start[c + 1]; k++)
-            test_edge(S->P, S->tol, o, u, from_vertex, G->items[k], &best, &found);
+        for (uint32_t k = G->start[c]; k < G->start[c + 1]; k++) {
+            uint32_t e = G->items[k], *memo = &tested[e & (RAY_MEMO - 1)];
+            if (*memo == e) continue;
+            *memo = e;
+            test_edge(S->P, S->tol, o, u, from_vertex, e, &best, &found);
+        }
         /* Exit distances through the cell's x and y walls, recomputed from
         ** the wall (no accumulated increments). */
         double tx = wk_grid_exit(G->x0, G->cw, cx, sx, o.x, u.x);

@@ -115,12 +115,19 @@ const char *wk_status_name(wk_status s) {
 
 /* ---- solve ---- */
 
+double wk_clock_s(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skeleton **out,
                    double *time_s, size_t *peak_bytes) {
     *out = NULL;
     size_t live0 = R->alloc.live;
     wk_run_reset_peak(R);
     R->variant = V;
+    R->phase_s = 0;
     if (P->pslg && !(V->flags & WK_VARIANT_PSLG)) {
         wk_status st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
                                "variant %s does not take PSLG input (a graph that is not disjoint "
@@ -151,7 +158,7 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
                            wk_skeleton **out, double *time_s, size_t *peak_bytes,
                            wk_validate_report *rep) {
     *out = NULL;
-    double total_s = 0, scale0 = R->opt.tol_scale;
+    double total_s = 0, phase_s = 0, scale0 = R->opt.tol_scale;
     size_t peak = 0;
     wk_error first;
     wk_status st = WK_OK;
@@ -172,6 +179,7 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
         R->opt.tol_scale = scale0 * ladder[i];
         st = wk_solve(R, V, P, out, &t_s, &pk);
         total_s += t_s;
+        phase_s += R->phase_s;
         if (pk > peak) peak = pk;
         if (st == WK_OK && (st = wk_validate(R, P, *out, tol, rep)) != WK_OK) {
             wk_skeleton_free(R, *out);
@@ -183,6 +191,7 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
         wk_count(R, WK_COUNTER_tolerance_escalations, 1);
     }
     R->opt.tol_scale = scale0;
+    R->phase_s = phase_s;
     if (st != WK_OK) R->err = first; /* the first attempt says what went wrong */
     if (time_s) *time_s = total_s;
     if (peak_bytes) *peak_bytes = peak;

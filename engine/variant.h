@@ -23,6 +23,10 @@ struct wk_variant {
     ** (wk_solve frees whatever is left).  WK_EUNSUPPORTED: the variant does
     ** not apply to P. */
     wk_status (*run)(wk_run *R, const wk_polygon *P, wk_skeleton **out);
+    /* The variant's timed phase, a part of run whose wall time the variant
+    ** adds to R->phase_s (wk_phase_begin / wk_phase_end), so benchmarks can
+    ** show its share; a short name for plots and --stats, or NULL (none). */
+    const char *phase;
 };
 
 /* A variant lists its counters once, as X(name, meaning), e.g.

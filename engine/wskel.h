@@ -253,7 +253,19 @@ typedef struct wk_run {
     wk_options opt;
     const wk_variant *variant; /* whose counters these are: set by wk_solve */
     wk_error err;            /* the first failure wins */
+    double phase_s;          /* wall seconds of the variant's timed phase
+                                (wk_variant.phase) in the last wk_solve (the
+                                attempts' sum for wk_solve_checked); 0 when
+                                it has none.  A time, so not a counter:
+                                counters are deterministic */
 } wk_run;
+
+/* Monotonic wall clock in seconds (for phase timing). */
+double wk_clock_s(void);
+/* The variant's timed phase: t0 = wk_phase_begin(); ...; wk_phase_end(R, t0)
+** adds the elapsed wall time to R->phase_s. */
+static inline double wk_phase_begin(void) { return wk_clock_s(); }
+static inline void wk_phase_end(wk_run *R, double t0) { R->phase_s += wk_clock_s() - t0; }
 
 /* Cannot fail; leaves R closable.  Default options, libc allocator,
 ** counting observer. */
@@ -763,6 +775,7 @@ wk_status wk_write_offsets_wkt(wk_run *R, FILE *f, wk_offset_set *const *O, uint
 const char *wk_variant_name(const wk_variant *V);
 const char *wk_variant_summary(const wk_variant *V);
 unsigned wk_variant_flags(const wk_variant *V); /* WK_VARIANT_* */
+const char *wk_variant_phase(const wk_variant *V); /* its timed phase, or NULL */
 
 /* The name of the first registered variant with all of `flags`, or NULL
 ** (messages that suggest a variant without the engine naming one). */

@@ -10,6 +10,11 @@ colour in every panel, the legend outside the panel so it covers no data.
                      and repeats; variants with a cache at their largest k),
                      the log-log slope in the legend and the NNLS model of
                      fit.py dashed beside its data, in the data's colour;
+                     a variant with a timed phase (the motorcycle variant's
+                     M(P)) also gets the phase's time, dash-dotted in its
+                     colour, with its median share of the time in the
+                     legend (phase_s of the CSV's JSON-lines twin, when it
+                     is there and has it);
     memory_vs_n      peak tracked bytes (solid) and peak RSS (dotted)
                      against n, the same panels;
     k_effect         per family: time against k (top) and peak tracked
@@ -43,7 +48,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fit  # noqa: E402  (the model's formula, fit.predict)
-from results import group_by, k_order, k_value, load_csv, loglog_slope  # noqa: E402
+from results import config_key, group_by, k_order, k_value, load_csv, loglog_slope  # noqa: E402
 
 MAX_LINES = 6       # data series per panel: more are not told apart at a glance
 NCOLS = 3           # panels per figure row
@@ -162,6 +167,36 @@ def panel_slots(rows, keys, series_of):
     return out
 
 
+def attach_phases(csv_path, rows):
+    """Set r["phase"], r["phase_s"] from the JSON-lines twin of the CSV
+    (wskel-bench writes the timed phase there only); None where absent.
+    Returns how many rows got a phase time."""
+    for r in rows:
+        r["phase"] = r["phase_s"] = None
+    twin = (csv_path[:-4] if csv_path.endswith(".csv") else csv_path) + ".jsonl"
+    if not os.path.exists(twin):
+        return 0
+    got = {}
+    with open(twin) as f:
+        for line in f:
+            line = line.strip()
+            if not line:
+                continue
+            try:
+                j = json.loads(line)
+            except ValueError:
+                continue  # a partial last line of an interrupted sweep
+            if j.get("phase_s") is not None:
+                got[config_key(j)] = (j["phase"], float(j["phase_s"]))
+    n = 0
+    for r in rows:
+        ph = got.get(config_key(r))
+        if ph:
+            r["phase"], r["phase_s"] = ph
+            n += 1
+    return n
+
+
 def plot_time_vs_n(rows, outdir, written, fits):
     colors = variant_colors(rows)
     by = group_by(rows, ("family", "weights", "variant"))
@@ -185,6 +220,15 @@ def plot_time_vs_n(rows, outdir, written, fits):
             label = "%s%s (slope %.2f)" % (var, " k=%s" % k if k != "" else "", slope)
             ax.plot(ns, ts, marker=MARKERS.get(var, "d"), linestyle=STYLES.get(var, "-"),
                     color=colors[var], label=label, markersize=4)
+            pr = [r for r in lr if r.get("phase_s") is not None]
+            pmed = median_by(pr, lambda r: r["n"], lambda r: r["phase_s"])
+            if pmed:
+                pns = sorted(pmed)
+                share = median_by(pr, lambda r: r["n"], lambda r: r["phase_s"] / r["wall_s"])
+                shares = [share[n] for n in pns]
+                ax.plot(pns, [pmed[n] for n in pns], linestyle="-.", linewidth=1.0,
+                        color=colors[var], label="%s: %s (%.0f..%.0f%% of it)" % (
+                            var, pr[0]["phase"], 100 * min(shares), 100 * max(shares)))
             f = fits.get(var + "/" + fam + "/" + w)
             if f and len(ns) >= 2:
                 rmed = median_by(lr, lambda r: r["n"], lambda r: r["r"])
@@ -406,6 +450,9 @@ def main():
     if not ok:
         print("plot.py: no ok rows, nothing to plot")
         return 0
+    if not attach_phases(args.csv, ok):
+        notes.append("time_vs_n: no phase times (phase_s) in the JSON-lines twin, so no "
+                     "phase curves")
     plot_time_vs_n(ok, args.outdir, written, fits)
     plot_memory_vs_n(ok, args.outdir, written)
     for f in (plot_k, plot_events):

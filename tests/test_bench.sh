@@ -242,6 +242,20 @@ drop_holes "$T/base.csv" "$T/base_legacy.csv"
 check "legacy CSV: regress.py compares a new run with it (holes = 0)" \
     '$PY scripts/regress.py $T/run.csv $T/base_legacy.csv --time-tol 3 > $T/r8.txt && grep -q "0 regressions" $T/r8.txt'
 
+# ---- 5b. the variant's timed phase (JSON lines only; the CSV keeps its columns)
+$BENCH --family star --n 300 --variant motorcycle,naive --quiet --out "$T/phase.csv"
+check "phase: a motorcycle row has M(P) and a positive phase_s below wall_s, naive has none" \
+    '$PY - $T/phase.jsonl <<EOF
+import json, sys
+rows = [json.loads(l) for l in open(sys.argv[1])]
+m = [r for r in rows if r["variant"] == "motorcycle"]
+nv = [r for r in rows if r["variant"] == "naive"]
+assert len(m) == 1 and len(nv) == 1, rows
+assert m[0]["phase"] == "M(P)" and 0 < m[0]["phase_s"] <= m[0]["wall_s"], m[0]
+assert nv[0]["phase"] is None and nv[0]["phase_s"] is None, nv[0]
+EOF'
+check "phase: the CSV has no phase column" '! grep -v "^#" $T/phase.csv | head -1 | grep -q phase'
+
 # ---- 6. the qsort() reference
 positive() { $PY -c 'import sys; v = float(sys.argv[1]); sys.exit(0 if 0 < v < 100 else 1)' "$1" 2>/dev/null; }
 qref=$($BENCH --qsort-ref); qrc=$?

@@ -689,4 +689,5 @@ const wk_variant wk_variant_arrangement = {
     ar_counters,
     sizeof ar_counters / sizeof ar_counters[0],
     arrangement_run,
+    NULL, /* no timed phase */
 };

@@ -219,4 +219,5 @@ const wk_variant wk_variant_deforming = {
     df_counters,
     sizeof df_counters / sizeof df_counters[0],
     deforming_run,
+    NULL, /* no timed phase */
 };

@@ -132,4 +132,5 @@ const wk_variant wk_variant_monotone = {
     mono_counters,
     sizeof mono_counters / sizeof mono_counters[0],
     monotone_run,
+    NULL, /* no timed phase */
 };

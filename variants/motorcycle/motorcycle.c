@@ -742,7 +742,9 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     const wk_polygon *P = wk_wf_polygon(W);
     if (ensure_vertex_arrays(A, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
     wk_motorcycle_graph *G = NULL;
+    double t0 = wk_phase_begin(); /* M(P): the variant's timed phase */
     wk_status st = wk_motorcycle_graph_build(R, P, &G);
+    wk_phase_end(R, t0);
     if (st != WK_OK) return st;
     wk_count(R, WK_VC_motorcycles, G->stats.motorcycles);
     wk_count(R, WK_VC_wall_crashes, G->stats.wall_crashes);
@@ -1353,4 +1355,5 @@ const wk_variant wk_variant_motorcycle = {
     mc_counters,
     sizeof mc_counters / sizeof mc_counters[0],
     motorcycle_run,
+    "M(P)",
 };

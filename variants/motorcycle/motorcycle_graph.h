@@ -95,7 +95,10 @@
 ** (and again each time that count doubles; not in the outer cells, where
 ** grid_index clamps) it also indexes their lines by canonical angle th in [0, pi) and
 ** signed offset h of the cell's centre C (about sqrt(k) angle bins by
-** 4 sqrt(k) offset bins), and a new motorcycle tests only the lines that
+** 4 sqrt(k) offset bins; each angle bin keeps the range of its occupied
+** offset bins, so a scan never reads the empty buckets: in a hub, whose
+** lines all pass near one point, those were most of the 4k buckets read per
+** listing), and a new motorcycle tests only the lines that
 ** can cross its own in the cell's disk (C, rho): two lines meet at
 ** distance r from C only if |h_i - h_j cos D| <= r |sin D| (D = th_j -
 ** th_i), so an angle bin whose D range misses +-pi/2 is searched only over

@@ -21,4 +21,5 @@ const wk_variant wk_variant_naive = {
     NULL,
     0,
     naive_run,
+    NULL, /* no timed phase */
 };
