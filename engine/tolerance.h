@@ -142,8 +142,8 @@
 ** this leaves are dropped.  The validator's tolerance: each skeleton is
 ** certified to it, so below it two valid skeletons may resolve a feature
 ** differently; the fuzz finding of a needle 9e6 long beside unit-sized
-** parts (features 1.1e-7 of the scale) has valid skeletons of naive and
-** monotone that agree at 1e-6 and differ at 1e-7 of the scale. */
+** parts (features 1.1e-7 of the scale) has valid skeletons from the reference and
+** a chain-merging variant that agree at 1e-6 and differ at 1e-7 of the scale. */
 #define WK_SAME_SKELETON_TOL_REL WK_VALIDATE_TOL_REL
 /* The face areas must sum to the polygon's area within this relative error
 ** (each face's area is a shoelace sum over nodes constructed to ~eps_d). */
@@ -207,7 +207,7 @@
 ** The bar was 1e-3 eps_d *ahead*: a fuzz finding, a pinch 1e-6 wide with
 ** eps_d = 0.43 (tests/data/fuzz/ealgo_arrangement_pinch.wpoly), put the
 ** other side's piece 1e-6 ahead of the vertex, the segment finder never
-** met it and the vertex was left alive (arrangement exit 2). */
+** met it and the vertex was left alive (exit 2 of a variant that finds splits by ray shots). */
 #define WK_RAY_PIECE_SLACK 1e-12
 #define WK_RAY_BEHIND_SLACK 1.0
 /* A hit within WK_RAY_END_SNAP of a piece's end (as a fraction of the piece)
