@@ -32,7 +32,7 @@
 ** wavefront defines rather than another roof with the same planes (an
 ** arc could be missing where two closed walks join).
 */
-#include "wskel.h"
+#include "validate_internal.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -44,13 +44,6 @@ static int incidence_cmp(const void *x, const void *y) {
     const incidence *a = x, *b = y;
     if (a->face != b->face) return a->face < b->face ? -1 : 1;
     return a->node < b->node ? -1 : a->node > b->node;
-}
-
-static double signed_distance(const wk_polygon *P, uint32_t e, double x, double y) {
-    wk_point a = P->p[e], b = P->p[wk_polygon_next(P, e)];
-    double dx = b.x - a.x, dy = b.y - a.y, len = hypot(dx, dy);
-    /* inward normal of a counter-clockwise edge: (-dy, dx) / len */
-    return (-dy * (x - a.x) + dx * (y - a.y)) / len;
 }
 
 wk_status wk_validate_general(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
@@ -90,31 +83,13 @@ wk_status wk_validate_general(wk_run *R, const wk_polygon *P, const wk_skeleton 
         if (c->a >= S->n_nodes || c->b >= S->n_nodes || c->a == c->b)
             return WK_FAIL(R, WK_EINVALID, P->name, 0, "validate (general c): arc %u [%u, %u] has bad ends",
                            i, c->a, c->b);
-        bool cap = c->left == WK_NONE || c->right == WK_NONE;
         if ((c->left >= P->n && c->left != WK_NONE) || (c->right >= P->n && c->right != WK_NONE) ||
             c->left == c->right)
             return WK_FAIL(R, WK_EINVALID, P->name, 0,
                            "validate (general c): arc %u has faces %u, %u", i, c->left, c->right);
-        uint32_t ends[2] = {c->a, c->b}, sides[2] = {c->left, c->right};
-        for (int j = 0; j < 2; j++) {
-            const wk_node *v = &S->nodes[ends[j]];
-            if (cap && !(H > 0 && fabs(v->t - H) <= tol_t))
-                return WK_FAIL(R, WK_EINVALID, P->name, 0,
-                               "validate (general c): cap arc %u ends at node %u at t = %.17g, not "
-                               "at the height %g",
-                               i, ends[j], v->t, H);
-            for (int k = 0; k < 2; k++) {
-                uint32_t e = sides[k];
-                if (e == WK_NONE) continue;
-                double err = fabs(signed_distance(P, e, v->x, v->y) - P->w[e] * v->t);
-                if (err > rep->max_distance_error) rep->max_distance_error = err;
-                if (!(err <= tol))
-                    return WK_FAIL(R, WK_EINVALID, P->name, 0,
-                                   "validate (general c): arc %u, node %u (%g, %g, t %g): off the "
-                                   "plane of edge %u by %.3g (tolerance %.3g)",
-                                   i, ends[j], v->x, v->y, v->t, e, err, tol);
-            }
-        }
+        if (wk_validate_arc_ends(R, P, S, i, H, tol, tol_t, P->name, "general c", "the height",
+                                 "plane", rep) != WK_OK)
+            return R->err.code;
     }
     /* (d): incidences (face, node): both sides of every arc, the input edges */
     size_t m = 4 * (size_t)S->n_arcs + 2 * (size_t)P->n;

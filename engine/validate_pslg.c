@@ -63,7 +63,7 @@
 ** sides squared) for (e) and O(cap sides squared) for (f): a check for
 ** tests and moderate inputs, as is the reference it checks.
 */
-#include "wskel.h"
+#include "validate_internal.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -76,13 +76,6 @@ static int dart_cmp(const void *x, const void *y) {
     if (a->face != b->face) return a->face < b->face ? -1 : 1;
     if (a->from != b->from) return a->from < b->from ? -1 : 1;
     return a->to < b->to ? -1 : a->to > b->to;
-}
-
-static double signed_distance(const wk_polygon *P, uint32_t e, double x, double y) {
-    wk_point a = P->p[e], d = wk_polygon_edge_dir(P, e);
-    double len = hypot(d.x, d.y);
-    /* the swept side is on the left of the edge's direction: normal (-dy, dx) */
-    return (-d.y * (x - a.x) + d.x * (y - a.y)) / len;
 }
 
 static double seg_dist(wk_point p, wk_point a, wk_point b) {
@@ -257,27 +250,9 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                            "validate (pslg c): arc %u has faces %u, %u (the cap, %u, only on the "
                            "left)",
                            i, c->left, c->right, WK_NONE);
-        bool cap = c->left == WK_NONE;
-        uint32_t ends[2] = {c->a, c->b}, sides[2] = {c->left, c->right};
-        for (int j = 0; j < 2; j++) {
-            const wk_node *v = &S->nodes[ends[j]];
-            if (cap && !(fabs(v->t - T) <= tol_t))
-                return WK_FAIL(R, WK_EINVALID, name, 0,
-                               "validate (pslg c): cap arc %u ends at node %u at t = %.17g, not at "
-                               "the horizon %.17g",
-                               i, ends[j], v->t, T);
-            for (int k = 0; k < 2; k++) {
-                uint32_t e = sides[k];
-                if (e == WK_NONE) continue;
-                double err = fabs(signed_distance(P, e, v->x, v->y) - P->w[e] * v->t);
-                if (err > rep->max_distance_error) rep->max_distance_error = err;
-                if (!(err <= tol))
-                    return WK_FAIL(R, WK_EINVALID, name, 0,
-                                   "validate (pslg c): arc %u, node %u (%g, %g, t %g): off the "
-                                   "offset line of edge %u by %.3g (tolerance %.3g)",
-                                   i, ends[j], v->x, v->y, v->t, e, err, tol);
-            }
-        }
+        if (wk_validate_arc_ends(R, P, S, i, T, tol, tol_t, name, "pslg c", "the horizon",
+                                 "offset line", rep) != WK_OK)
+            return R->err.code;
     }
     /* (d) darts: faces 0..n-1, the cap as face n; used darts get face n + 1 */
     size_t m = 2 * (size_t)S->n_arcs + P->n;

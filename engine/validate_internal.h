@@ -1,0 +1,28 @@
+/*
+** validate_internal.h: what the validators for capped roofs
+** (validate_general.c) and for PSLGs (validate_pslg.c) share: stage (c),
+** every arc end on the offset lines of both of the arc's faces.
+*/
+#ifndef WK_VALIDATE_INTERNAL_H
+#define WK_VALIDATE_INTERNAL_H
+
+#include "wskel.h"
+
+/* Signed distance of (x, y) from edge e's supporting line, positive on the
+** side the edge sweeps (left of its direction; a PSLG's zero-length cap has
+** its direction in P->dir). */
+double wk_edge_signed_distance(const wk_polygon *P, uint32_t e, double x, double y);
+
+/* Stage (c) for arc i, whose ends and faces are already checked to be in
+** range: both ends within tol of the offset line d_e = w(e) t of each face
+** e (WK_NONE: the cap, no face), and a cap arc's ends at time T within
+** tol_t (T > 0; a cap with T <= 0 is refused).  Records the largest
+** distance error in rep.  Messages read "validate (STAGE): ...", name the
+** cap's time as T_NAME ("the horizon", "the height") and a face's offset
+** line as LINE_NAME. */
+wk_status wk_validate_arc_ends(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t i,
+                               double T, double tol, double tol_t, const char *name,
+                               const char *stage, const char *t_name, const char *line_name,
+                               wk_validate_report *rep);
+
+#endif
