@@ -129,20 +129,17 @@ wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skele
     R->variant = V;
     R->phase_s = 0;
     if (P->pslg && !(V->flags & WK_VARIANT_PSLG)) {
+        const char *able = wk_variant_with_flags(WK_VARIANT_PSLG);
         wk_status st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
                                "variant %s does not take PSLG input (a graph that is not disjoint "
                                "simple cycles); %s does",
-                               V->name,
-                               wk_variant_with_flags(WK_VARIANT_PSLG) ? wk_variant_with_flags(WK_VARIANT_PSLG)
-                                                                      : "(none registered)");
+                               V->name, able ? able : "(none registered)");
         if (R->obs->finished) R->obs->finished(R->obs_ud, false);
         return st;
     }
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
+    double t0 = wk_clock_s();
     wk_status st = V->run(R, P, out);
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    if (time_s) *time_s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    if (time_s) *time_s = wk_clock_s() - t0;
     if (peak_bytes) *peak_bytes = R->alloc.peak - live0;
     if (st != WK_OK) {
         /* Never half-return (CGAL): no skeleton on failure. */
