@@ -445,11 +445,32 @@ static wk_status plan_cancel(wk_wavefront *W) {
     return WK_OK;
 }
 
+/* True if input vertex u can never reach the line of edge e: it lies
+** strictly behind e's input line (exact test) and moves away from it
+** (relative to the line, which moves forward at its weight), so it stays
+** behind at every t.  Such a vertex is within eps_g of a piece of e only
+** because the input puts it there: a vertex 6e-6 beyond a non-adjacent edge
+** of a needle 1e6 long, the gap between them outside the polygon.  Forcing
+** it onto the piece made the gap interior and left a cycle in the skeleton
+** (tests/data/fuzz/needle_vertex_beyond_edge.wpoly).  A vertex that meets a
+** piece comes from its front.  Only input vertices: a constructed vertex's
+** place is a node eps_g wide, and one eps_g behind the line is not near the
+** piece anyway. */
+static bool never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
+    const wk_polygon *P = W->P;
+    if (u >= P->n || W->v[u].t0 != 0) return false;
+    if (wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
+    const wk_offset_line *L = &W->L[e];
+    return L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
+}
+
 /* Step 5a: vertices that meet the group without being at a node yet.  An
 ** untouched vertex whose pieces both lead to the same node closes a
 ** triangle of no area with it; an untouched vertex lying on a sub-piece
 ** between two nodes (where parallel edges met: an end of a collinear step
-** of the other side) meets it too.  Each becomes a node (*again). */
+** of the other side) meets it too, unless it is an input vertex that
+** never reaches the piece's line (never_reaches_line).  Each becomes a node
+** (*again). */
 static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
     for (uint32_t i = 0; i < W->n_sub; i++) {
@@ -478,6 +499,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
             double sq = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
             if (sq <= -W->eps_g || sq >= len + W->eps_g || fabs(off) > W->eps_g) continue;
+            if (never_reaches_line(W, W->comp[j], x->edge)) continue;
             if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, W->comp[j]) != WK_OK)
                 return R->err.code;
             *again = true;

@@ -12,7 +12,7 @@ coincident nodes and compares arc for arc, faces and times included.
   * TestCgalBaseline: bin/wskel-cgal alone: face bookkeeping, the clockwise
     renumbering, the unit-weight refusal.
   * TestHandMade: square, 2x1 rectangle, regular 3..12-gons, L, cross, comb,
-    clockwise copies, collinear vertices; wskel against CGAL.
+    clockwise copies, collinear vertices, a crack below eps_d; wskel against CGAL.
   * TestGenerated: bin/wskel-gen families x n in {8, 20, 50, 200, 500} x seeds,
     wskel (naive; motorcycle on the odd seeds) against CGAL; one summary line
     per family on stderr.
@@ -113,6 +113,12 @@ def hand_made():
         "comb4": comb(4),
         "collinear": [(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (3, 2), (1.5, 2), (0, 2),
                       (0, 1)],
+        # vertex 5 lies 3e-7 (below eps_d) beyond edge 3's line, in a crack
+        # outside the polygon (tests/data/degenerate/crack_beyond_edge.wpoly):
+        # the reference closed the crack and lost edge 4's face, which
+        # --check did not see
+        "crack": [(1, 1), (4, 6), (3, 1003.0001974), (3, 1003), (1, 3), (1.0059997, 6),
+                  (0, 6)],
     }
     for k in range(3, 13):
         polys["regular%d" % k] = regular(k)
@@ -120,6 +126,7 @@ def hand_made():
     polys["comb4_cw"] = list(reversed(polys["comb4"]))
     polys["collinear_cw"] = list(reversed(polys["collinear"]))
     polys["regular7_cw"] = list(reversed(polys["regular7"]))
+    polys["crack_cw"] = list(reversed(polys["crack"]))
     return {k: [(float(x), float(y)) for x, y in v] for k, v in polys.items()}
 
 
