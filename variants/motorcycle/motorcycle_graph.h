@@ -209,6 +209,13 @@ typedef struct wk_motorcycle_graph {
     wk_motorcycle_stats stats;
 } wk_motorcycle_graph;
 
+/* A PSLG's motorcycle whose ray meets no wall (the outer face): its
+** trace ends where the wavefront takes no more events (motorcycle_graph.c,
+** escape_len), a WALL crash with neither wall edge nor wall vertex. */
+static inline bool wk_motorcycle_escapes(const wk_motorcycle *m) {
+    return m->wall_edge == WK_NONE && m->wall_vertex == WK_NONE;
+}
+
 /* Crash point and time of m. */
 static inline wk_point wk_motorcycle_crash_point(const wk_motorcycle *m) {
     return (wk_point){m->o.x + m->len * m->u.x, m->o.y + m->len * m->u.y};
