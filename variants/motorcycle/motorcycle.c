@@ -45,6 +45,10 @@
 ** the wavefront (F placed on the first piece along it) and its crossings
 ** with the live traces over the added part are listed (trace_extensions).
 **
+** PSLGs (the rings are the half-edge face cycles, engine/pslg.c): a trace
+** escaping into the outer face (no wall) keeps F beyond for good, with no
+** guard; see the README for the degenerate cases handled at t = 0.
+**
 ** Check and fallback.  The skeleton is validated before it is returned;
 ** if the finder gave up or its skeleton fails, the reference variant
 ** answers (reference_fallbacks).

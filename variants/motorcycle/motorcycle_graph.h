@@ -19,6 +19,14 @@
 ** edges parallel below WK_PARALLEL_SIN runs along the mean normal; both
 ** have speed INFINITY, so tau = 0 on all of their trace.
 **
+** PSLGs (P->pslg, engine/pslg.c: rings are the face cycles of the
+** half-edges): a motorcycle per reflex corner, and a corner next to a cap
+** is reflex (so two per terminal, 002); motorcycles with one origin (a
+** terminal's two) never meet there; a segment is two walls at one place and
+** a ray's wall is the half-edge it reaches from its left; a ray that meets
+** no wall escapes (wk_motorcycle_escapes): wall_len is the distance it
+** covers until the wavefront takes no more events, with a margin.
+**
 ** Walls are all edges of all rings.  Each motorcycle's ray is first shot
 ** against them (engine/ray_shoot.h, first boundary point, its own two edges
 ** ignored; a vertex within the shooter's tol of the ray is hit as that
