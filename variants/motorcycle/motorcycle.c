@@ -635,38 +635,6 @@ static uint32_t forward_piece(const wk_wavefront *W, const mc_seg *S, double lam
     return pick;
 }
 
-/* A piece next to the last group's fresh vertices whose line holds trace
-** S at lam at time t, parallel to it (its offset line sweeps the trace's
-** whole line at once now), with the point at lam on the piece: the part
-** beyond lam is swept there and then, not on by a moving Steiner vertex, so
-** forward_piece's piece crossing it further along would cut the traces
-** waiting there too late.  A PSLG's terminal sends its motorcycles at 45
-** degrees to its segment, so on integer inputs a trace often runs parallel
-** to another segment. */
-static bool swept_at_once(const wk_wavefront *W, const mc_seg *S, double lam, double t) {
-    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W);
-    wk_point p = {S->o.x + lam * S->u.x, S->o.y + lam * S->u.y};
-    const uint32_t *fresh, *ended;
-    uint32_t n_fresh, n_ended;
-    wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
-    for (uint32_t i = 0; i < n_fresh; i++) {
-        uint32_t g = fresh[i];
-        if (!wk_wf_alive(W, g)) continue;
-        uint32_t two[2] = {g, wk_wf_prev(W, g)};
-        for (int j = 0; j < 2; j++) {
-            uint32_t a = two[j];
-            const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
-            if (!isnan(lambda_on_line(S, L, t)) || !(fabs(wk_offset_distance(L, p, t)) <= slack))
-                continue;
-            wk_point pa = wk_wf_position(W, a, t), pb = wk_wf_position(W, wk_wf_next(W, a), t);
-            double dx = pb.x - pa.x, dy = pb.y - pa.y, l = hypot(dx, dy);
-            double along = l > 0 ? ((p.x - pa.x) * dx + (p.y - pa.y) * dy) / l : 0;
-            if (along >= -slack && along <= l + slack) return true;
-        }
-    }
-    return false;
-}
-
 /* Some trace waits with F beyond at a resting Steiner vertex of si past
 ** lam (si guards it). */
 static bool guards_ahead(const mc_state *A, const wk_wavefront *W, uint32_t si, double lam) {
@@ -713,7 +681,7 @@ static wk_status remove_segment(mc_state *A, wk_wavefront *W, uint32_t si, doubl
     double lv = lambda_v(W, S, t), lf = lambda_f(W, S, t);
     bool met = isfinite(lf) && lf <= lv + WK_RELOCATE_SLACK * wk_wf_eps_d(W);
     if (!met && guards_ahead(A, W, si, lv)) {
-        uint32_t a = swept_at_once(W, S, lv, t) ? WK_NONE : forward_piece(W, S, lv, t);
+        uint32_t a = forward_piece(W, S, lv, t);
         if (a != WK_NONE && (S->pa != WK_NONE || S->beyond)) {
             wk_count(A->R, WK_VC_ghost_traces, 1);
             A->seg_of[S->v] = WK_NONE;
