@@ -424,7 +424,7 @@ static wk_status simulate(wk_wavefront *W) {
         if (id == WK_NONE) return R->err.code;
     }
     for (uint32_t i = 0; i < n; i++) wf_link(W, i, wk_polygon_next(P, i));
-    W->t_now = 0;
+    W->t_now = W->t_group = 0;
     W->n_fresh = 0;
     W->n_dead = 0;
     for (uint32_t i = 0; i < n; i++) {
@@ -443,26 +443,28 @@ static wk_status simulate(wk_wavefront *W) {
     double stop = P->pslg ? wf_event_limit(W) : INFINITY;
     bool pslg_default = P->pslg && !(R->opt.until > 0), stop_final = false;
     for (;;) {
-        /* the finder's own events (e.g. 000's start and switch events) go first when
-        ** they are not later than the next wavefront event */
         double tq = W->Q.size ? W->Q.key[wk_event_queue_peek(&W->Q)].time : INFINITY;
-        if (W->finder->next_time) {
-            double tf = W->finder->next_time(W->finder_ud);
-            if (tf <= tq && isfinite(tf)) {
-                if (tf > W->t_now) W->t_now = tf;
-                if (W->finder->process_next(W->finder_ud, W) != WK_OK) return R->err.code;
-                continue;
-            }
-        }
-        if (!W->Q.size) break;
+        double tf = W->finder->next_time ? W->finder->next_time(W->finder_ud) : INFINITY;
+        if (!isfinite(tf)) tf = INFINITY;
+        double tn = tf <= tq ? tf : tq;
+        if (tn == INFINITY) break;
         /* a PSLG's horizon: events after it are not part of the skeleton;
-        ** the default one is set after the last event before the limit, and
-        ** the events up to it still count */
-        if (tq > stop) {
+        ** the default one is set after the last group before the limit, and
+        ** the events up to it still count.  A finder's own events count as
+        ** the wavefront's here (they may reveal one at their time or later)
+        ** but set no horizon (t_group) */
+        if (tn > stop) {
             if (!pslg_default || stop_final) break;
             stop = wf_default_horizon(W);
             stop_final = true;
-            if (tq > stop) break;
+            if (tn > stop) break;
+        }
+        /* the finder's own events (e.g. 000's start and switch events) go first when
+        ** they are not later than the next wavefront event */
+        if (tf <= tq) {
+            if (tf > W->t_now) W->t_now = tf;
+            if (W->finder->process_next(W->finder_ud, W) != WK_OK) return R->err.code;
+            continue;
         }
         uint32_t first = wk_event_queue_pop(R, &W->Q);
         double t = W->v[first].ev_t;
@@ -470,7 +472,7 @@ static wk_status simulate(wk_wavefront *W) {
         same_time = (t <= W->t_now + W->eps_t) ? same_time + 1 : 0;
         if (same_time > 4 * (uint64_t)P->n + 64)
             return WK_FAIL(R, WK_EALGO, P->name, 0, "wavefront: no progress at t = %.17g", t);
-        W->t_now = t;
+        W->t_now = W->t_group = t;
         W->n_seeds = 0;
         if (wf_push_u32(R, &W->seeds, &W->n_seeds, &W->cap_seeds, first) != WK_OK) return R->err.code;
         while (W->Q.size) {

@@ -43,13 +43,13 @@ wk_status wf_check_horizon(const wk_wavefront *W) {
 double wf_default_horizon(const wk_wavefront *W) {
     double wmax = 0;
     for (uint32_t e = 0; e < W->P->n; e++) wmax = fmax(wmax, W->P->w[e]);
-    return W->t_now + WK_PSLG_HORIZON_MARGIN * wk_polygon_scale(W->P) / wmax;
+    return W->t_group + WK_PSLG_HORIZON_MARGIN * wk_polygon_scale(W->P) / wmax;
 }
 
 wk_status wf_close_at_horizon(wk_wavefront *W, double T) {
     wk_run *R = W->R;
     /* the last group may sit up to eps_t after the horizon it was taken at */
-    if (T < W->t_now) T = W->t_now;
+    if (T < W->t_group) T = W->t_group;
     /* The outer face's wavefront grows forever: if nothing is alive, a group
     ** resolved a feature at the tolerance wrongly (a unit 64-gon next to a
     ** vertex 4e9 away, at the first tolerance); no skeleton, so that

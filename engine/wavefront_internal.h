@@ -74,6 +74,10 @@ struct wk_wavefront {
     uint32_t nv, cap_v;
     wk_event_queue Q;
     double eps_d, eps_t, t_now;
+    double t_group;    /* the last group's time (0 before the first); t_now
+                          may pass it through a finder's own events, which
+                          are no events of the skeleton: a PSLG's default
+                          horizon counts from t_group */
     double eps_g;      /* node radius of the group being planned: eps_d, or
                           wider on a retry (wf_resolve_group) */
     wk_point origin;   /* all positions are relative to it (bounding-box centre) */
@@ -122,8 +126,8 @@ wk_status wf_push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint3
 ** at t = T and the pieces between them become the cap's arcs; sets
 ** W->S->horizon. */
 wk_status wf_close_at_horizon(wk_wavefront *W, double T);
-/* The default horizon: now plus WK_PSLG_HORIZON_MARGIN diagonals over the
-** largest weight. */
+/* The default horizon: the last group's time (t_group) plus
+** WK_PSLG_HORIZON_MARGIN diagonals over the largest weight. */
 double wf_default_horizon(const wk_wavefront *W);
 /* The last event time a PSLG's run follows: --until, or by default
 ** WK_PSLG_DEFAULT_EVENTS_REL diagonals over the smallest weight. */

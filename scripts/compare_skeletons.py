@@ -157,8 +157,10 @@ def _check(d, name):
         a, b, l, r = e
         if not (0 <= a < len(pts) and 0 <= b < len(pts)):
             raise SkeletonError("%s: arc %d refers to a missing node" % (name, i))
-        if not (0 <= l < n and 0 <= r < n):
-            raise SkeletonError("%s: arc %d has a face outside [0, n)" % (name, i))
+        # a PSLG's cap arcs (at its horizon) have the unswept side, -1
+        lo = -1 if "pslg" in d else 0
+        if not (lo <= l < n and lo <= r < n):
+            raise SkeletonError("%s: arc %d has a face outside [%d, n)" % (name, i, lo))
         out_arcs.append((a, b, l, r))
     return n, pts, out_arcs
 
@@ -214,6 +216,8 @@ def face_weights(d):
     best = [None] * n   # (t, node) per face
     for a, b, l, r in arcs:
         for f in (l, r):
+            if f < 0:
+                continue
             for v in (a, b):
                 t = pts[v][2]
                 if t > 0 and (best[f] is None or t > best[f][0]):
@@ -243,7 +247,7 @@ def _node_weights(n_nodes, arcs, weights):
     nw = [None] * n_nodes
     for a, b, l, r in arcs:
         for f in (l, r):
-            w = weights[f]
+            w = weights[f] if f >= 0 else None
             if w is None:
                 continue
             for v in (a, b):

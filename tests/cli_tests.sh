@@ -412,7 +412,27 @@ run "$WSKEL" "$PSLG/segment.graphml"
 h=$("$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); print(d["pslg"]["horizon"], sorted((x,y) for x,y,t in d["nodes"] if t > 0))' "$OUT" 2>/dev/null)
 if [ "$h" = "0.5 [(-0.5, -0.5), (-0.5, 0.5), (2.5, -0.5), (2.5, 0.5)]" ]; then pass "pslg segment: rectangle at the default horizon"
 else fail "pslg segment: rectangle at the default horizon" "got '$h'"; fi
-for v in arrangement monotone motorcycle deforming; do
+# the motorcycle variant takes PSLGs (two motorcycles per terminal): the same
+# skeleton as naive on every unit-weight file; weighted ones it refuses
+# (exit 2), as for polygons
+n_mc=0
+for f in "$PSLG"/*.graphml; do
+  b=$(basename "$f")
+  run "$WSKEL" --variant motorcycle --check --stats -o "$TMP/pslg_mc.json" "$f"
+  case "$b" in collinear_weights*|square_dangling*|weighted_*)
+    expect "pslg $b: motorcycle refuses weights (exit 2)" 2 "unit weights only"
+    continue;;
+  esac
+  expect "pslg $b: motorcycle --check exits 0" 0
+  if printf '%s' "$ERR" | grep -q reference_fallbacks; then fail "pslg $b: motorcycle did not fall back" "$ERR"
+  else pass "pslg $b: motorcycle did not fall back"; fi
+  "$WSKEL" -o "$TMP/pslg_naive.json" "$f"
+  if "$PY" scripts/compare_skeletons.py "$TMP/pslg_naive.json" "$TMP/pslg_mc.json" >/dev/null; then
+    pass "pslg $b: motorcycle equals naive"; n_mc=$((n_mc + 1))
+  else fail "pslg $b: motorcycle equals naive" "$("$PY" scripts/compare_skeletons.py "$TMP/pslg_naive.json" "$TMP/pslg_mc.json" | tail -3)"; fi
+done
+[ "$n_mc" -gt 3 ] && pass "pslg: motorcycle compared on $n_mc files" || fail "pslg: motorcycle compared on the test files" "only $n_mc"
+for v in arrangement monotone deforming; do
   run "$WSKEL" --variant "$v" -o "$TMP/refused.json" "$PSLG/plus.graphml"
   expect "pslg: --variant $v refuses (exit 2)" 2 "does not take PSLG input"
   [ ! -e "$TMP/refused.json" ] && pass "pslg: --variant $v leaves no file" || fail "pslg: --variant $v leaves no file" ""

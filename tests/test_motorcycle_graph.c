@@ -404,3 +404,73 @@ Test(motorcycle_graph, allocation_failures_with_cell_index_are_clean, .timeout =
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
 }
+
+/* ------------------------------------------------------------ PSLGs */
+
+static wk_polygon *pslg(wk_run *R, uint32_t nv, const double *x, const double *y, uint32_t ne,
+                        const uint32_t *s, const uint32_t *d) {
+    wk_polygon *P = NULL;
+    cr_assert_eq(wk_pslg_from_arrays(R, nv, x, y, ne, s, d, NULL, "pslg", NULL, NULL, &P), WK_OK,
+                 "%s", R->err.msg);
+    return P;
+}
+
+/* A segment (0,0)-(2,0): its two terminals are four reflex corners (002:
+** two motorcycles per terminal), leaving at 45 degrees to the segment with
+** speed sqrt 2; the two at one terminal do not crash at their common
+** origin, and all four escape into the outer face: no wall, a trace as long
+** as escape_len (speed * one diagonal over the weight, times 1.25, plus
+** 1.25 diagonals). */
+Test(motorcycle_graph, pslg_segment_has_four_escaping_motorcycles) {
+    static const double X[2] = {0, 2}, Y[2] = {0, 0};
+    static const uint32_t S[1] = {0}, D[1] = {1};
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = pslg(&R, 2, X, Y, 1, S, D);
+    wk_motorcycle_graph *G = build_checked(&R, P);
+    cr_assert_eq(G->n, 4, "%u motorcycles", G->n);
+    double want = 1.25 * (sqrt(2.0) * 2 + 2);
+    for (uint32_t i = 0; i < 4; i++) {
+        const wk_motorcycle *m = &G->m[i];
+        cr_assert(wk_motorcycle_escapes(m), "motorcycle %u hits a wall", i);
+        cr_assert_eq(m->kind, WK_MCG_WALL);
+        cr_assert(fabs(m->speed - sqrt(2.0)) <= NEAR, "speed %.17g", m->speed);
+        cr_assert(fabs(fabs(m->u.x) - sqrt(0.5)) <= NEAR && fabs(fabs(m->u.y) - sqrt(0.5)) <= NEAR);
+        cr_assert(fabs(m->len - want) <= NEAR * want, "len %.17g, want %.17g", m->len, want);
+    }
+    cr_assert_eq(G->n_groups, 0);
+    wk_motorcycle_graph_free(&R, G);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
+
+/* A "T": the segment (0,0)-(0,2) ends 1 below the middle of (-4,3)-(4,3).
+** Its top terminal's motorcycles leave at 45 degrees up and hit the bar at
+** (-1, 3) and (1, 3), each on the half-edge facing it (the bar's lower side:
+** the one whose left is below, i.e. running right to left), never the one
+** on the far side. */
+Test(motorcycle_graph, pslg_terminal_hits_the_facing_half_edge) {
+    static const double X[4] = {0, 0, -4, 4}, Y[4] = {0, 2, 3, 3};
+    static const uint32_t S[2] = {0, 2}, D[2] = {1, 3};
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = pslg(&R, 4, X, Y, 2, S, D);
+    wk_motorcycle_graph *G = build_checked(&R, P);
+    uint32_t hits = 0;
+    for (uint32_t i = 0; i < G->n; i++) {
+        const wk_motorcycle *m = &G->m[i];
+        if (!(fabs(m->o.x + G->centre.x) <= NEAR && fabs(m->o.y + G->centre.y - 2) <= NEAR)) continue;
+        cr_assert_eq(m->kind, WK_MCG_WALL, "top terminal's motorcycle %u crashes into a trace", i);
+        cr_assert_neq(m->wall_edge, WK_NONE);
+        wk_point d = wk_polygon_edge_dir(P, m->wall_edge);
+        cr_assert(d.x < 0 && d.y == 0, "wall half-edge runs (%g, %g), want right to left", d.x, d.y);
+        wk_point c = wk_motorcycle_crash_point(m);
+        cr_assert(fabs(fabs(c.x + G->centre.x) - 1) <= NEAR && fabs(c.y + G->centre.y - 3) <= NEAR,
+                  "crash at (%g, %g)", c.x + G->centre.x, c.y + G->centre.y);
+        hits++;
+    }
+    cr_assert_eq(hits, 2, "%u motorcycles from the top terminal", hits);
+    wk_motorcycle_graph_free(&R, G);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}

@@ -867,3 +867,96 @@ Test(pslg, degenerate_polygons_as_pslgs) {
         release(&R, P, S);
     }
 }
+
+/* ---- the motorcycle variant on PSLGs (002: two motorcycles per terminal) */
+
+/* G as GraphML (WSKEL_PSLG_DUMP: a failing case for bin/wskel). */
+static void dump_graphml(const graph_buf *G, const char *path) {
+    FILE *f = fopen(path, "w");
+    if (!f) return;
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<graphml "
+               "xmlns=\"http://graphml.graphdrawing.org/xmlns\">\n"
+               "<key id=\"x\" for=\"node\" attr.name=\"vertex-coordinate-x\" attr.type=\"double\"/>\n"
+               "<key id=\"y\" for=\"node\" attr.name=\"vertex-coordinate-y\" attr.type=\"double\"/>\n"
+               "<graph id=\"G\" edgedefault=\"undirected\">\n");
+    for (uint32_t v = 0; v < G->nv; v++)
+        fprintf(f, "<node id=\"n%u\"><data key=\"x\">%.17g</data><data key=\"y\">%.17g</data></node>\n",
+                v, G->x[v], G->y[v]);
+    for (uint32_t e = 0; e < G->ne; e++)
+        fprintf(f, "<edge source=\"n%u\" target=\"n%u\"></edge>\n", G->s[e], G->d[e]);
+    fprintf(f, "</graph>\n</graphml>\n");
+    fclose(f);
+}
+
+/* G (unit weights) by the motorcycle variant, validated, against the
+** reference's skeleton (same_skeleton, merging within
+** WK_SAME_SKELETON_TOL_REL of the diagonal).  The variant hands an input it
+** cannot certify to the reference (reference_fallbacks): such a case is
+** counted in *fallbacks and not compared (its skeleton is the
+** reference's).  Returns the motorcycles launched. */
+static uint64_t motorcycle_matches_reference(const graph_buf *G, double until, bool invariants,
+                                             const char *what, uint64_t *fallbacks) {
+    if (getenv("WSKEL_PSLG_DUMP")) dump_graphml(G, getenv("WSKEL_PSLG_DUMP"));
+    wk_run R, Rr;
+    wk_run_init(&R);
+    wk_run_init(&Rr);
+    R.opt.until = Rr.opt.until = until;
+    R.opt.check_invariants = invariants;
+    wk_polygon *P = NULL;
+    wk_skeleton *S = NULL, *Sr = NULL;
+    expect_ok(&R, wk_pslg_from_arrays(&R, G->nv, G->x, G->y, G->ne, G->s, G->d, NULL, "pslg",
+                                      NULL, NULL, &P));
+    wk_status st = wk_solve(&R, variant("motorcycle"), P, &S, NULL, NULL);
+    if (st == WK_OK) st = wk_validate(&R, P, S, 0, NULL);
+    char msg[1024];
+    err_text(&R, msg, sizeof msg);
+    cr_assert_eq(st, WK_OK, "%s until %g: motorcycle: %s", what, until, msg);
+    if (counter(&R, "reference_fallbacks")) {
+        ++*fallbacks;
+        if (getenv("WSKEL_PSLG_FALLBACKS"))
+            cr_log_warn("%s until %g: fell back to the reference", what, until);
+    }
+    cr_assert_eq(wk_solve(&Rr, wk_variant_reference(), P, &Sr, NULL, NULL), WK_OK, "%s", what);
+    double tol = WK_SAME_SKELETON_TOL_REL * wk_polygon_scale(P);
+    /* the default horizon counts from the last event, whose time the two
+    ** may round differently */
+    cr_assert(fabs(S->horizon - Sr->horizon) <= tol, "%s until %g: horizon %.17g, reference %.17g",
+              what, until, S->horizon, Sr->horizon);
+    sk_match m = {.tol = tol, .tol_t = tol, .merge = true, .P = P};
+    char why[900];
+    cr_assert(same_skeleton(Sr, S, m, why, sizeof why), "%s until %g: %s", what, until, why);
+    uint64_t motorcycles = counter(&R, "motorcycles");
+    wk_skeleton_free(&Rr, Sr);
+    wk_run_close(&Rr);
+    release(&R, P, S);
+    return motorcycles;
+}
+
+Test(pslg, motorcycle_variant_equals_the_reference) {
+    static graph_buf G;
+    uint64_t n_seeds = quick() ? 60 : 180, motorcycles = 0, cases = 0, fallbacks = 0;
+    if (getenv("WSKEL_PSLG_CASES")) n_seeds = strtoull(getenv("WSKEL_PSLG_CASES"), NULL, 10);
+    for (uint64_t seed0 = 1; seed0 <= n_seeds; seed0++) {
+        uint64_t seed = seed0 * 0x9E3779B97F4A7C15ull + 1;
+        int family = (int)(seed0 % 6);
+        if (family == 0) random_segments(&G, &seed, 4 + (uint32_t)(seed0 % 20));
+        else if (family == 1) polygon_with_segments(&G, &seed, 2 + (uint32_t)(seed0 % 8));
+        else if (family == 2) grid_graph(&G, &seed, 3 + (uint32_t)(seed0 % 4), 3);
+        else if (family == 3) grid_graph(&G, &seed, 2 + (uint32_t)(seed0 % 5), 0);
+        else if (family == 4) regular_star(&G, &seed, 3 + (uint32_t)(seed0 % 9));
+        else integer_segments(&G, &seed, 3 + (uint32_t)(seed0 % 30));
+        drop_isolated(&G);
+        if (G.ne == 0) continue;
+        char what[64];
+        snprintf(what, sizeof what, "seed %llu family %d", (unsigned long long)seed0, family);
+        double untils[2] = {0, 5 + 20 * rnd(&seed)};
+        for (int u = 0; u < 2; u++, cases++)
+            motorcycles +=
+                motorcycle_matches_reference(&G, untils[u], seed0 % 4 == 0, what, &fallbacks);
+    }
+    cr_log_info("pslg motorcycle sweep: %llu cases, %llu motorcycles, %llu fell back",
+                (unsigned long long)cases, (unsigned long long)motorcycles,
+                (unsigned long long)fallbacks);
+    cr_assert_gt(cases, 80, "only %llu cases ran", (unsigned long long)cases);
+    cr_assert_gt(motorcycles, 1000, "only %llu motorcycles", (unsigned long long)motorcycles);
+}

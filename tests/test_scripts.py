@@ -584,6 +584,27 @@ def test_compare_skeletons_time_tolerance_is_weight_aware():
     assert not cs.compare(a, split((tol / 2) / w), weights=[1.0] * 4).identical
 
 
+def test_gen_pslg_deterministic_and_non_crossing():
+    """scripts/gen_pslg.py: the same N and seed give the same segments, a
+    new seed others; no two segments cross or come within the clearance
+    (tested here by brute force over all pairs, not by the grid it uses)."""
+    sys.path.insert(0, SCRIPTS)
+    import gen_pslg
+    a, b, c = gen_pslg.segments(60, 5), gen_pslg.segments(60, 5), gen_pslg.segments(60, 6)
+    assert a == b and a != c
+    assert len(a) == 60, len(a)
+    for i in range(len(a)):
+        for j in range(i):
+            (p, q), (r, t) = a[i], a[j]
+            crosses = (gen_pslg._orient(p, q, r) * gen_pslg._orient(p, q, t) < 0
+                       and gen_pslg._orient(r, t, p) * gen_pslg._orient(r, t, q) < 0)
+            near = min(gen_pslg._dist(p, r, t), gen_pslg._dist(q, r, t),
+                       gen_pslg._dist(r, p, q), gen_pslg._dist(t, p, q))
+            assert not crosses and near >= 0.5, (i, j, near)
+    text = gen_pslg.graphml(a)
+    assert text.count("<edge ") == 60 and text.count("<node ") == 120
+
+
 def main():
     tests = [(k, v) for k, v in globals().items() if k.startswith("test_") and callable(v)]
     failed = 0

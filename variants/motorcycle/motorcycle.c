@@ -45,6 +45,10 @@
 ** the wavefront (F placed on the first piece along it) and its crossings
 ** with the live traces over the added part are listed (trace_extensions).
 **
+** PSLGs (the rings are the half-edge face cycles, engine/pslg.c): a trace
+** escaping into the outer face (no wall) keeps F beyond for good, with no
+** guard; see the README for the degenerate cases handled at t = 0.
+**
 ** Check and fallback.  The skeleton is validated before it is returned;
 ** if the finder gave up or its skeleton fails, the reference variant
 ** answers (reference_fallbacks).
@@ -512,6 +516,9 @@ static wk_status list_crossings(mc_state *A, wk_wavefront *W, uint32_t si, doubl
         double b = (ex * S->u.y - ey * S->u.x) / den; /* on T */
         if (a < l0 - eps || a > l1 + eps || b > T->len + eps) continue;
         if (b < lambda_lo(W, T, t) - eps) continue;
+        /* a PSLG's added part may pass through a node where T starts: the
+        ** crossing is at T's near end itself, nothing of T to cut there */
+        if (wk_wf_polygon(W)->pslg && b <= lambda_lo(W, T, t) + eps) continue;
         if (add_cross(A, si, a, j) != WK_OK || add_cross(A, j, b, si) != WK_OK) return A->R->err.code;
         /* the new crossing may come before the ones j has fetched */
         mc_seg *J = &A->s[j];
@@ -702,9 +709,32 @@ static void brute_split(wk_wavefront *W, uint32_t v) {
 }
 
 
+/* v's trace escapes (a PSLG's outer face: beyond, and nothing waits at its
+** end) and neither neighbour of v is within wk_wf_near_split's reach: v
+** has no split but where a start event gives its trace an F.  Then
+** wk_wf_near_split is not asked, as its first test offers a split with a
+** piece however far, which nothing would refresh when that piece ends
+** (the finder refreshes what its traces follow). */
+static bool escapes_alone(const mc_state *A, const wk_wavefront *W, uint32_t v) {
+    if (v >= A->cap_v || A->seg_of[v] == WK_NONE) return false;
+    const mc_seg *S = &A->s[A->seg_of[v]];
+    if (!S->beyond || S->ghost) return false;
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W), near = WK_ARR_NEAR_SLACK * wk_wf_eps_d(W);
+    for (uint32_t k = 0; k < S->nx; k++)
+        if (fabs(S->x[k].lam - S->len) <= slack) return false;
+    double t = wk_wf_now(W);
+    wk_point pv = wk_wf_position(W, v, t);
+    uint32_t two[2] = {wk_wf_next(W, v), wk_wf_prev(W, v)};
+    for (int j = 0; j < 2; j++) {
+        wk_point q = wk_wf_position(W, two[j], t);
+        if (hypot(q.x - pv.x, q.y - pv.y) <= near) return false;
+    }
+    return true;
+}
+
 static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
     mc_state *A = ud;
-    wk_wf_near_split(W, v);
+    if (!wk_wf_polygon(W)->pslg || !escapes_alone(A, W, v)) wk_wf_near_split(W, v);
     if (v >= A->cap_v || A->seg_of[v] == WK_NONE) {
         brute_split(W, v);
         return;
@@ -736,6 +766,54 @@ static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
 
 static void mc_incremental(void *ud, wk_wavefront *W, uint32_t v) { mc_full(ud, W, v); }
 
+/* Trace si waits beyond its end X (a simultaneous crash) and every trace
+** that guards X ends at X waiting too (a group without a trace through X):
+** none of them brings the wavefront to X, which the wavefront may reach
+** first from elsewhere (a PSLG's regular star inside a ring: the ring's
+** edge reaches the arms' crash points before the motorcycles; 002's start
+** event at a resting Steiner vertex hit by a wavefront edge).  An escaping
+** trace ends at no crash. */
+static bool waits_on_waiting_only(const mc_state *A, const wk_wavefront *W, uint32_t si) {
+    const mc_seg *S = &A->s[si];
+    if (!live(S) || S->ghost || !S->beyond) return false;
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W);
+    wk_point X = {S->o.x + S->len * S->u.x, S->o.y + S->len * S->u.y};
+    bool any = false;
+    for (uint32_t k = 0; k < S->nx; k++) {
+        const mc_cross *c = &S->x[k];
+        if (fabs(c->lam - S->len) > slack || c->other >= A->n_s) continue;
+        const mc_seg *T = &A->s[c->other];
+        if (!live(T)) continue;
+        if (!T->beyond || fabs(lambda_of(T, X) - T->len) > slack) return false;
+        any = true;
+    }
+    return any;
+}
+
+/* Follow F of such a trace along its whole ray from t = 0, as a trace
+** extension does: F on the first piece the ray meets (beyond X), the
+** trace lengthened to it and its crossings over the added part listed;
+** when F passes X it cuts the others waiting there (a start event). */
+static wk_status extend_at_start(mc_state *A, wk_wavefront *W, uint32_t si) {
+    wk_run *R = A->R;
+    wk_count(R, WK_VC_trace_extensions, 1);
+    double old = A->s[si].len;
+    if (place_f(A, W, si, 0.0, false) != WK_OK) return R->err.code;
+    mc_seg *S = &A->s[si];
+    if (S->pa == WK_NONE) {
+        /* the ray meets nothing (it leaves into the outer face): the
+        ** members reaching X cut each other there, as in a polygon */
+        S->beyond = true;
+        return arm_segment(A, W, si);
+    }
+    double lf = lambda_f(W, S, 0.0);
+    if (isfinite(lf) && lf > S->len) S->len = lf;
+    if (S->len > old &&
+        (index_part(A, si, old, S->len) != WK_OK || list_crossings(A, W, si, old, S->len) != WK_OK))
+        return R->err.code;
+    return arm_segment(A, W, si);
+}
+
 static wk_status mc_start(void *ud, wk_wavefront *W) {
     mc_state *A = ud;
     wk_run *R = A->R;
@@ -766,7 +844,9 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
         uint32_t si;
         if ((st = new_segment(A, m->vertex, m->o, m->u, m->len, &si)) != WK_OK) break;
         seg_id[i] = si;
-        if (m->kind != WK_MCG_WALL) {
+        if (m->kind != WK_MCG_WALL || wk_motorcycle_escapes(m)) {
+            /* an escaping trace (a PSLG's outer face) is never reached
+            ** from its far end: F stays beyond, unguarded (below) */
             A->s[si].beyond = true;
         } else if (m->wall_edge != WK_NONE && wk_wf_alive(W, m->wall_edge) &&
                    wk_wf_start_time(W, m->wall_edge) == 0 &&
@@ -792,10 +872,12 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
         if (st == WK_OK && on != WK_NONE && on < G->n && seg_id[on] != WK_NONE)
             st = add_cross(A, si, m->len, seg_id[on]);
     }
-    /* a trace waiting at its end with no live guard there is shot now */
+    /* a trace waiting at its end with no live guard there is shot now
+    ** (not an escaping one: nothing waits at its end) */
     for (uint32_t i = 0; st == WK_OK && i < G->n; i++) {
         uint32_t si = seg_id[i];
         if (si == WK_NONE || !A->s[si].beyond) continue;
+        if (G->m[i].kind == WK_MCG_WALL && wk_motorcycle_escapes(&G->m[i])) continue;
         bool has_guard = false;
         const mc_seg *S = &A->s[si];
         for (uint32_t k = 0; k < S->nx && !has_guard; k++)
@@ -806,6 +888,9 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     wk_motorcycle_graph_free(R, G);
     uint32_t n_graph = A->n_s;
     for (uint32_t si = 0; st == WK_OK && si < n_graph; si++) st = arm_segment(A, W, si);
+    /* a PSLG's traces that wait for each other only are followed on */
+    for (uint32_t si = 0; st == WK_OK && P->pslg && si < n_graph; si++)
+        if (waits_on_waiting_only(A, W, si)) st = extend_at_start(A, W, si);
     /* reflex vertices of t = 0 that are not motorcycles (the collinear rule) */
     for (uint32_t v = 0; st == WK_OK && v < wk_wf_vertex_count(W); v++)
         if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && A->seg_of[v] == WK_NONE)
@@ -1350,8 +1435,8 @@ static const wk_counter_def mc_counters[] = WK_VARIANT_COUNTER_TABLE(MC_COUNTER_
 
 const wk_variant wk_variant_motorcycle = {
     "motorcycle",
-    "wavefront on the motorcycle graph M(P) (002); equal weights, polygons with holes",
-    0,
+    "wavefront on the motorcycle graph M(P) (002); equal weights, polygons with holes and PSLGs",
+    WK_VARIANT_PSLG,
     mc_counters,
     sizeof mc_counters / sizeof mc_counters[0],
     motorcycle_run,

@@ -195,6 +195,10 @@ static bool meet_geo(const sim *S, const geo *a, const geo *b, double *di, doubl
                      wk_point *x) {
     double eps = S->eps_d;
     double dx = b->o.x - a->o.x, dy = b->o.y - a->o.y;
+    /* Two motorcycles from one point (a PSLG's terminal: its two corners;
+    ** a polygon's vertices are distinct) leave it into different angular
+    ** gaps: they share the origin only, which is no crash. */
+    if (dx == 0 && dy == 0) return false;
     double cr = a->u.x * b->u.y - a->u.y * b->u.x;
     double s, t;
     if (fabs(cr) > WK_MCG_PARALLEL_SIN) {
@@ -810,6 +814,23 @@ static void sim_clear(sim *S) {
 
 /* ============================================================ the rays */
 
+/* A PSLG's cap (a terminal's edge of length 0, engine/pslg.c) or a polygon
+** edge of length 0 (none: polygons have distinct consecutive vertices). */
+static bool is_cap(const wk_polygon *P, uint32_t e) {
+    return P->pslg && P->edge_of && P->edge_of[e] == WK_NONE;
+}
+
+/* The corner v turns right (reflex), exactly.  A polygon's vertex: its
+** two neighbours (wk_polygon_is_reflex).  A PSLG's corner next to a cap
+** has a neighbour at its own point (the terminal's other corner), so the
+** points say "straight"; the cap turns its segment's direction by exactly
+** 90 degrees clockwise (its stored direction is (dy, -dx)), so both
+** corners of a terminal are reflex: 002's two motorcycles per terminal. */
+static bool corner_is_reflex(wk_run *R, const wk_polygon *P, uint32_t v) {
+    if (P->pslg && (is_cap(P, v) || is_cap(P, wk_polygon_prev(P, v)))) return true;
+    return R ? wk_polygon_is_reflex_counted(R, P, v) : wk_polygon_is_reflex(P, v);
+}
+
 /* A motorcycle starts at v when the wavefront's vertex at v is reflex:
 ** exactly reflex and its edges not parallel or antiparallel below the
 ** wavefront's bar (wk_vertex_start: a vertex between edges parallel below
@@ -817,7 +838,7 @@ static void sim_clear(sim *S) {
 ** stress finding: such a vertex's instant trace blocked a real motorcycle,
 ** whose vertex then outlived its trace). */
 static bool launches(wk_run *R, const wk_polygon *P, uint32_t v) {
-    if (!(R ? wk_polygon_is_reflex_counted(R, P, v) : wk_polygon_is_reflex(P, v))) return false;
+    if (!corner_is_reflex(R, P, v)) return false;
     wk_offset_line la, lb;
     wk_point o = {0, 0}, vel;
     wk_offset_line_of_edge_at(P, wk_polygon_prev(P, v), o, &la);
@@ -867,6 +888,9 @@ static bool hit_at_origin(const wk_polygon *Q, double tol, uint32_t v, wk_point 
         if (e == v || e == prev) continue;
         uint32_t f = wk_polygon_next(Q, e);
         wk_point p = Q->p[e], q = Q->p[f];
+        /* a PSLG's node is one corner per angular gap, all at one point:
+        ** the edges at the node only touch the ray's origin */
+        if (Q->pslg && ((p.x == a.x && p.y == a.y) || (q.x == a.x && q.y == a.y))) continue;
         double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
         double t = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
         t = t < 0 ? 0 : t > 1 ? 1 : t;
@@ -882,13 +906,67 @@ static bool hit_at_origin(const wk_polygon *Q, double tol, uint32_t v, wk_point 
     return true;
 }
 
+/* The length of an escaping motorcycle's trace (a PSLG's ray that meets no
+** wall): the distance it covers up to the time after which the wavefront
+** takes no event, R->opt.until or else WK_PSLG_DEFAULT_EVENTS_REL diagonals
+** over the smallest weight (engine/wavefront_horizon.c), with a margin of
+** WK_PSLG_HORIZON_MARGIN of that time and diagonals.  Crashes later than
+** that time change nothing the wavefront uses (a crash at time T only ends
+** a trace after T), so the graph up to it is M(G) up to it. */
+static double escape_len(const wk_run *R, const wk_polygon *P, double speed) {
+    double scale = wk_polygon_scale(P), wmin = INFINITY;
+    for (uint32_t e = 0; e < P->n; e++) wmin = fmin(wmin, P->w[e]);
+    double T = R->opt.until > 0 ? R->opt.until : WK_PSLG_DEFAULT_EVENTS_REL * scale / wmin;
+    if (speed == INFINITY) return WK_PSLG_MAX_HORIZON_REL * scale;
+    return (1 + WK_PSLG_HORIZON_MARGIN) * (speed * T + scale);
+}
+
+/* The stored edge on the other side of a PSLG segment: twin[e] for every
+** stored edge e that is not a cap (engine/pslg.c stores each segment as
+** two half-edges of opposite direction).  NULL for a polygon. */
+static wk_status pslg_twins(wk_run *R, const wk_polygon *P, uint32_t **out) {
+    *out = NULL;
+    if (!P->pslg) return WK_OK;
+    uint32_t *first = WK_NEW_ARRAY(R, uint32_t, P->n_graph_edges ? P->n_graph_edges : 1);
+    uint32_t *twin = WK_NEW_ARRAY(R, uint32_t, P->n);
+    if (!first || !twin) {
+        if (first) WK_FREE_ARRAY(R, first, P->n_graph_edges ? P->n_graph_edges : 1);
+        if (twin) WK_FREE_ARRAY(R, twin, P->n);
+        return R->err.code ? R->err.code : WK_ENOMEM;
+    }
+    for (uint32_t k = 0; k < P->n_graph_edges; k++) first[k] = WK_NONE;
+    for (uint32_t e = 0; e < P->n; e++) {
+        twin[e] = WK_NONE;
+        uint32_t k = P->edge_of[e];
+        if (k == WK_NONE) continue;
+        if (first[k] == WK_NONE) {
+            first[k] = e;
+        } else {
+            twin[e] = first[k];
+            twin[first[k]] = e;
+        }
+    }
+    WK_FREE_ARRAY(R, first, P->n_graph_edges ? P->n_graph_edges : 1);
+    *out = twin;
+    return WK_OK;
+}
+
 /* The motorcycles of P (relative to c) with their wall hits, shot on the
-** translated copy Q. */
+** translated copy Q.  A PSLG's segment is two walls at one place (its
+** half-edges): the one facing the motorcycle is the one whose left side
+** (the side its offset line sweeps) the ray comes from, i.e. the ray turns
+** right across it.  A PSLG's ray that meets no wall escapes (the outer
+** face): its trace ends at escape_len, no wall. */
 static wk_status shoot_all(wk_run *R, const wk_polygon *P, const wk_polygon *Q, wk_point c,
                            wk_motorcycle *m, uint32_t r) {
     wk_ray_shooter sh;
-    wk_status st = wk_ray_shooter_init(R, &sh, Q);
+    uint32_t *twin = NULL;
+    wk_status st = pslg_twins(R, P, &twin);
     if (st != WK_OK) return st;
+    if ((st = wk_ray_shooter_init(R, &sh, Q)) != WK_OK) {
+        if (twin) WK_FREE_ARRAY(R, twin, P->n);
+        return st;
+    }
     for (uint32_t i = 0, j = 0; i < P->n && j < r; i++) {
         if (!launches(R, P, i)) continue;
         wk_motorcycle *g = &m[j++];
@@ -899,10 +977,18 @@ static wk_status shoot_all(wk_run *R, const wk_polygon *P, const wk_polygon *Q, 
         if (!wk_ray_shoot(&sh, g->o, g->u, i, &h) &&
             !wk_ray_shoot_brute(Q, sh.tol, g->o, g->u, i, &h) &&
             !hit_at_origin(Q, sh.tol, i, g->u, &h)) {
-            wk_ray_shooter_clear(R, &sh);
-            return WK_FAIL(R, WK_EALGO, P->name, 0,
-                           "ray of reflex vertex %u (%.17g, %.17g) meets no wall", i, P->p[i].x,
-                           P->p[i].y);
+            if (P->pslg) {
+                h = (wk_ray_hit){escape_len(R, P, g->speed), {0, 0}, WK_NONE, WK_NONE};
+            } else {
+                wk_ray_shooter_clear(R, &sh);
+                return WK_FAIL(R, WK_EALGO, P->name, 0,
+                               "ray of reflex vertex %u (%.17g, %.17g) meets no wall", i,
+                               P->p[i].x, P->p[i].y);
+            }
+        }
+        if (twin && h.edge != WK_NONE && twin[h.edge] != WK_NONE) {
+            wk_point d = wk_polygon_edge_dir(P, h.edge);
+            if (d.x * g->u.y - d.y * g->u.x > 0) h.edge = twin[h.edge];
         }
         g->wall_len = h.t;
         g->len = h.t;
@@ -914,6 +1000,7 @@ static wk_status shoot_all(wk_run *R, const wk_polygon *P, const wk_polygon *Q, 
         g->group = WK_NONE;
     }
     wk_ray_shooter_clear(R, &sh);
+    if (twin) WK_FREE_ARRAY(R, twin, P->n);
     return WK_OK;
 }
 
@@ -1160,6 +1247,22 @@ static bool steiner_expected(const wk_motorcycle_graph *G, uint32_t i, double d,
     return G->m[i].group == mk->group && same_bits(G->m[i].len, d);
 }
 
+/* How far m's wall point is from the wall its ray hit (0 for an escaping
+** ray). */
+static double wall_distance(const wk_motorcycle *m, const wk_polygon *P, wk_point c) {
+    wk_point wx = {m->o.x + m->wall_len * m->u.x, m->o.y + m->wall_len * m->u.y};
+    if (m->wall_edge != WK_NONE) {
+        uint32_t e = m->wall_edge, f = wk_polygon_next(P, e);
+        wk_point a = {P->p[e].x - c.x, P->p[e].y - c.y}, b = {P->p[f].x - c.x, P->p[f].y - c.y};
+        return dist_to_segment(wx, a, b);
+    }
+    if (m->wall_vertex != WK_NONE) {
+        wk_point a = {P->p[m->wall_vertex].x - c.x, P->p[m->wall_vertex].y - c.y};
+        return hypot(wx.x - a.x, wx.y - a.y);
+    }
+    return 0;
+}
+
 bool wk_motorcycle_graph_check(const wk_motorcycle_graph *G, const wk_polygon *P, char *why,
                                size_t size) {
     double tol_d = WK_MCG_CHECK_SLACK * G->eps_d, tol_t = WK_MCG_CHECK_SLACK * G->eps_t;
@@ -1194,19 +1297,13 @@ bool wk_motorcycle_graph_check(const wk_motorcycle_graph *G, const wk_polygon *P
             if (m->len != m->wall_len)
                 return fail_why(why, size, "motorcycle %u: wall crash before its wall", i);
         }
-        /* The ray's wall hit, whatever the kind. */
-        if ((m->wall_edge == WK_NONE) == (m->wall_vertex == WK_NONE))
-            return fail_why(why, size, "motorcycle %u: wall hit is neither edge nor vertex", i);
-        wk_point wx = {m->o.x + m->wall_len * m->u.x, m->o.y + m->wall_len * m->u.y};
-        double dw;
-        if (m->wall_edge != WK_NONE) {
-            uint32_t e = m->wall_edge, f = wk_polygon_next(P, e);
-            wk_point a = {P->p[e].x - c.x, P->p[e].y - c.y}, b = {P->p[f].x - c.x, P->p[f].y - c.y};
-            dw = dist_to_segment(wx, a, b);
-        } else {
-            wk_point a = {P->p[m->wall_vertex].x - c.x, P->p[m->wall_vertex].y - c.y};
-            dw = hypot(wx.x - a.x, wx.y - a.y);
-        }
+        /* The ray's wall hit, whatever the kind (none: a PSLG's escaping
+        ** ray, see shoot_all). */
+        if (wk_motorcycle_escapes(m) && !P->pslg)
+            return fail_why(why, size, "motorcycle %u: escapes a polygon", i);
+        if (m->wall_edge != WK_NONE && m->wall_vertex != WK_NONE)
+            return fail_why(why, size, "motorcycle %u: wall hit is both edge and vertex", i);
+        double dw = wall_distance(m, P, c);
         if (!(dw <= tol_d))
             return fail_why(why, size, "motorcycle %u: wall point %.3g off its wall", i, dw);
         if (m->kind == WK_MCG_TRACE) {

@@ -19,6 +19,14 @@
 ** edges parallel below WK_PARALLEL_SIN runs along the mean normal; both
 ** have speed INFINITY, so tau = 0 on all of their trace.
 **
+** PSLGs (P->pslg, engine/pslg.c: rings are the face cycles of the
+** half-edges): a motorcycle per reflex corner, and a corner next to a cap
+** is reflex (so two per terminal, 002); motorcycles with one origin (a
+** terminal's two) never meet there; a segment is two walls at one place and
+** a ray's wall is the half-edge it reaches from its left; a ray that meets
+** no wall escapes (wk_motorcycle_escapes): wall_len is the distance it
+** covers until the wavefront takes no more events, with a margin.
+**
 ** Walls are all edges of all rings.  Each motorcycle's ray is first shot
 ** against them (engine/ray_shoot.h, first boundary point, its own two edges
 ** ignored; a vertex within the shooter's tol of the ray is hit as that
@@ -208,6 +216,13 @@ typedef struct wk_motorcycle_graph {
     wk_motorcycle_steiner *steiner; /* n_steiner */
     wk_motorcycle_stats stats;
 } wk_motorcycle_graph;
+
+/* A PSLG's motorcycle whose ray meets no wall (the outer face): its
+** trace ends where the wavefront takes no more events (motorcycle_graph.c,
+** escape_len), a WALL crash with neither wall edge nor wall vertex. */
+static inline bool wk_motorcycle_escapes(const wk_motorcycle *m) {
+    return m->wall_edge == WK_NONE && m->wall_vertex == WK_NONE;
+}
 
 /* Crash point and time of m. */
 static inline wk_point wk_motorcycle_crash_point(const wk_motorcycle *m) {

@@ -360,7 +360,10 @@ uint32_t mc_pg_shoot(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, wk_poin
         wk_point pv = wk_wf_position(W, v, later);
         double l1 = (pv.x - o.x) * u.x + (pv.y - o.y) * u.y;
         hit g = shoot_at(R, G, W, o, u, v, later, l1);
-        if (g.a != WK_NONE) h = g;
+        /* a PSLG's ray may leave into the outer face: a vertex hit that a
+        ** moment later leaves nothing ahead was a contact only (at t = 0
+        ** another corner of v's own node) */
+        if (g.a != WK_NONE || wk_wf_polygon(W)->pslg) h = g;
     }
     return h.a;
 }
