@@ -427,13 +427,17 @@ static wk_status check_nodes(wk_run *R, const wk_polygon *P, const wk_skeleton *
     wk_status st = WK_OK;
     for (uint32_t j = P->n; j < S->n_nodes && st == WK_OK; j++) {
         wk_point z = {S->nodes[j].x, S->nodes[j].y};
-        bool near = pip_near(&Q, z, tol);
-        if (!pip_inside(&Q, z) && !near)
+        /* the distance to the boundary only matters for a node outside or
+        ** at t <= 0: most nodes are neither, and pip_near cost twice what
+        ** pip_inside did (coastline 10^6: 13% of the motorcycle run) */
+        bool inside = pip_inside(&Q, z), after_start = S->nodes[j].t > 0;
+        bool near = (!inside || !after_start) && pip_near(&Q, z, tol);
+        if (!inside && !near)
             st = WK_FAIL(R, WK_EINVALID, P->name, 0,
                          "validate (b): node %u at (%.17g, %.17g), t = %.17g, lies outside the "
                          "polygon (farther than tol = %.3g from its boundary)",
                          j, z.x, z.y, S->nodes[j].t, tol);
-        else if (!(S->nodes[j].t > 0) && !near)
+        else if (!after_start && !near)
             st = WK_FAIL(R, WK_EINVALID, P->name, 0,
                          "validate (b): node %u at (%.17g, %.17g) has t = %.17g but lies farther "
                          "than tol = %.3g from the boundary",
