@@ -14,6 +14,7 @@
 #include "piece_grid.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "motorcycle.h"
@@ -280,19 +281,29 @@ wk_status mc_pg_after_group(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, 
     return WK_OK;
 }
 
+static int cmp_u32(const void *a, const void *b) {
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static bool pending_has(const mc_piece_grid *G, uint32_t v) {
+    return bsearch(&v, G->pending, G->n_pending, sizeof v, cmp_u32) != NULL;
+}
+
 /* List the pieces next to the pending fresh vertices still alive, with
 ** hulls from t (the shot's time: they are current now, so their positions
-** from t on are what the shots of this window can meet).  A vertex is fresh
-** in one group only, so each piece is listed at most twice, as before the
-** listing was lazy. */
+** from t on are what the shots of this window can meet).  Each piece once:
+** (f, next) for every pending f, (prev, f) unless prev is pending (a vertex
+** is fresh in one group only, so the list has no repeats). */
 static wk_status flush_pending(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, double t) {
     uint64_t before = G->listed;
+    qsort(G->pending, G->n_pending, sizeof *G->pending, cmp_u32);
     for (uint32_t i = 0; i < G->n_pending; i++) {
         uint32_t f = G->pending[i];
         if (!wk_wf_alive(W, f)) continue;
         uint32_t p = wk_wf_prev(W, f);
         if (list_piece(R, G, W, f, wk_wf_next(W, f), t) != WK_OK ||
-            list_piece(R, G, W, p, f, t) != WK_OK) {
+            (!pending_has(G, p) && list_piece(R, G, W, p, f, t) != WK_OK)) {
             G->valid = false; /* a partial update is no index */
             G->n_pending = 0;
             return WK_ENOMEM;
