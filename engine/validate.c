@@ -102,8 +102,8 @@
 ** occupied cell lists about PIP_EDGES_PER_CELL edges.  Not tolerances: cost
 ** trade-offs.  A fractal coastline's edges occupy about 1% of the cells of
 ** its box at n = 10^6, and each node's crossing count read all the edges
-** of its cell (11% of motorcycle's run there, perf); its edges are short,
-** each in about one cell. */
+** of its cell (11% of a self-validating variant's run there, perf); its
+** edges are short, each in about one cell. */
 #define PIP_DENSITY 0.5
 #define PIP_DENSITY_MAX 8.0
 #define PIP_EDGES_PER_CELL 4.0
@@ -461,7 +461,8 @@ static wk_status check_nodes(wk_run *R, const wk_polygon *P, const wk_skeleton *
         wk_point z = {S->nodes[j].x, S->nodes[j].y};
         /* the distance to the boundary only matters for a node outside or
         ** at t <= 0: most nodes are neither, and pip_near cost twice what
-        ** pip_inside did (coastline 10^6: 13% of the motorcycle run) */
+        ** pip_inside did (coastline 10^6: 13% of a self-validating
+        ** variant's run) */
         bool inside = pip_inside(&Q, z), after_start = S->nodes[j].t > 0;
         bool near = (!inside || !after_start) && pip_near(&Q, z, tol);
         if (!inside && !near)
