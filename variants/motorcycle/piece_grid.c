@@ -5,13 +5,16 @@
 ** Invariants while G->valid, at any time t in [t_b, t_e] between groups:
 ** every current piece (a alive, b = next(a)) has an entry (a, b) of build
 ** G->gen in every cell its position at t comes within margin of (it was
-** listed at the build, or after the group that made it current, with a hull
-** over [then, t_e]), or is on the overflow list; cells of another gen hold
-** no entries.
+** listed at the build, or at a shot after the group that made it current,
+** with a hull over [then, t_e]), or is on the overflow list, or has an end
+** on the pending list (a fresh vertex of a group since the last listing;
+** flush_pending lists those pieces before a grid shot reads a cell); cells
+** of another gen hold no entries.
 */
 #include "piece_grid.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "motorcycle.h"
@@ -39,6 +42,7 @@ void mc_pg_clear(wk_run *R, mc_piece_grid *G) {
         WK_FREE_ARRAY(R, G->cells, nc);
     }
     WK_FREE_ARRAY(R, G->over, G->cap_over);
+    WK_FREE_ARRAY(R, G->pending, G->cap_pending);
     mc_pg_init(G);
 }
 
@@ -128,35 +132,63 @@ static double collapse_time(const wk_wavefront *W, uint32_t a, uint32_t b, doubl
     return t0 + (s > 0 ? s : 0) / -rate + WK_PIECE_GRID_COLLAPSE_SLACK * wk_wf_eps_t(W);
 }
 
-/* Columns [*c0, *c1] of row r that the hull of p[0..3] (widened by
-** margin) meets; false if none. */
-static bool row_span(const mc_piece_grid *G, const wk_point *p, uint32_t r, uint32_t *c0,
+/* The hull of a piece's four end positions as the ten segments between
+** them (the four points as degenerate ones): the hull's x range in a slab
+** is the range of those segments' parts in it.  Each segment's y range and
+** slope are computed once per listing, not once per row (list_piece asks
+** for every row of the hull; the same bits as computing them per row). */
+typedef struct hull_segs {
+    double px[10], py[10], qx[10]; /* one end P, the other's x */
+    double ylo[10], yhi[10], k[10]; /* k: dx / dy; NAN when flat (x range [px, qx]) */
+} hull_segs;
+
+static void hull_segs_of(hull_segs *H, const wk_point *p) {
+    int n = 0;
+    for (int i = 0; i < 4; i++)
+        for (int j = i; j < 4; j++, n++) {
+            wk_point P = p[i], Q = p[j];
+            H->px[n] = P.x;
+            H->py[n] = P.y;
+            H->qx[n] = Q.x;
+            H->ylo[n] = P.y < Q.y ? P.y : Q.y;
+            H->yhi[n] = P.y < Q.y ? Q.y : P.y;
+            H->k[n] = P.y == Q.y ? NAN : (Q.x - P.x) / (Q.y - P.y);
+        }
+}
+
+/* Columns [*c0, *c1] of row r that the hull (widened by margin) meets;
+** false if none.  The positions are finite (list_piece checks), so the
+** comparisons below are fmin / fmax without their NaN cases. */
+static bool row_span(const mc_piece_grid *G, const hull_segs *H, uint32_t r, uint32_t *c0,
                      uint32_t *c1) {
     double m = G->margin;
     double s0 = G->y0 + (double)r * G->ch - m, s1 = G->y0 + (double)(r + 1) * G->ch + m;
     double xlo = INFINITY, xhi = -INFINITY;
-    for (int i = 0; i < 4; i++)
-        for (int j = i; j < 4; j++) {
-            wk_point P = p[i], Q = p[j];
-            double lo = fmax(s0, fmin(P.y, Q.y)), hi = fmin(s1, fmax(P.y, Q.y));
-            if (lo > hi) continue;
-            double x0, x1;
-            if (P.y == Q.y) {
-                x0 = P.x;
-                x1 = Q.x;
-            } else {
-                double k = (Q.x - P.x) / (Q.y - P.y);
-                x0 = P.x + (lo - P.y) * k;
-                x1 = P.x + (hi - P.y) * k;
-            }
-            xlo = fmin(xlo, fmin(x0, x1));
-            xhi = fmax(xhi, fmax(x0, x1));
+    for (int n = 0; n < 10; n++) {
+        double lo = s0 > H->ylo[n] ? s0 : H->ylo[n], hi = s1 < H->yhi[n] ? s1 : H->yhi[n];
+        if (lo > hi) continue;
+        double x0, x1;
+        if (isnan(H->k[n])) {
+            x0 = H->px[n];
+            x1 = H->qx[n];
+        } else {
+            x0 = H->px[n] + (lo - H->py[n]) * H->k[n];
+            x1 = H->px[n] + (hi - H->py[n]) * H->k[n];
         }
+        double a = x0 < x1 ? x0 : x1, b = x0 < x1 ? x1 : x0;
+        if (a < xlo) xlo = a;
+        if (b > xhi) xhi = b;
+    }
     if (!(xlo <= xhi)) return false;
     *c0 = col_of(G, xlo - m);
     *c1 = col_of(G, xhi + m);
     return true;
 }
+
+/* Rows whose spans list_piece keeps from its counting pass for its listing
+** pass (a taller hull computes them again).  Not a tolerance: a stack
+** buffer's size; coastline 10^5 lists 1.4 rows per piece on average. */
+#define PG_SPAN_ROWS 32
 
 /* List piece a -> b in every cell its hull over [t0, min(t_e, collapse)]
 ** meets (widened by margin); a piece whose hull would cover more than
@@ -178,13 +210,30 @@ static wk_status list_piece(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, 
     double len = fmax(hypot(p[1].x - p[0].x, p[1].y - p[0].y),
                       hypot(p[3].x - p[2].x, p[3].y - p[2].y));
     double cap = PG_OVERFLOW_CELLS + 4.0 * len / fmin(G->cw, G->ch);
-    uint32_t r0 = row_of(G, ylo - m), r1 = row_of(G, yhi + m), c0, c1;
+    hull_segs H;
+    hull_segs_of(&H, p);
+    uint32_t r0 = row_of(G, ylo - m), r1 = row_of(G, yhi + m), c0 = 0, c1 = 0;
+    uint32_t span[PG_SPAN_ROWS][2];
+    bool has[PG_SPAN_ROWS];
     double cells = 0;
-    for (uint32_t r = r0; r <= r1 && cells <= cap; r++)
-        if (row_span(G, p, r, &c0, &c1)) cells += (double)(c1 - c0 + 1);
+    for (uint32_t r = r0; r <= r1 && cells <= cap; r++) {
+        bool h = row_span(G, &H, r, &c0, &c1);
+        if (h) cells += (double)(c1 - c0 + 1);
+        if (r - r0 < PG_SPAN_ROWS) {
+            has[r - r0] = h;
+            span[r - r0][0] = c0;
+            span[r - r0][1] = c1;
+        }
+    }
     if (cells > cap) return push_overflow(R, G, a, b);
     for (uint32_t r = r0; r <= r1; r++) {
-        if (!row_span(G, p, r, &c0, &c1)) continue;
+        if (r - r0 < PG_SPAN_ROWS) {
+            if (!has[r - r0]) continue;
+            c0 = span[r - r0][0];
+            c1 = span[r - r0][1];
+        } else if (!row_span(G, &H, r, &c0, &c1)) {
+            continue;
+        }
         for (uint32_t c = c0; c <= c1; c++)
             if (push(R, G, r * G->nx + c, a, b) != WK_OK) return WK_ENOMEM;
     }
@@ -200,6 +249,7 @@ static wk_status build(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, doubl
     G->t_e = t + G->window;
     G->listed = 0;
     G->n_over = 0;
+    G->n_pending = 0; /* every alive piece is listed below */
     for (uint32_t a = 0; a < wk_wf_vertex_count(W); a++)
         if (wk_wf_alive(W, a) && list_piece(R, G, W, a, wk_wf_next(W, a), t) != WK_OK)
             return WK_ENOMEM;
@@ -214,22 +264,52 @@ wk_status mc_pg_after_group(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, 
     if (!G->valid) return WK_OK;
     if (t > G->t_e) {
         G->valid = false;
+        G->n_pending = 0;
         return WK_OK;
     }
     const uint32_t *fresh, *ended;
     uint32_t n_fresh, n_ended;
     wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    if (n_fresh == 0) return WK_OK;
+    if (WK_GROW(R, G->pending, G->cap_pending, G->n_pending + n_fresh) != WK_OK) {
+        G->valid = false; /* a partial update is no index */
+        G->n_pending = 0;
+        return WK_ENOMEM;
+    }
+    memcpy(G->pending + G->n_pending, fresh, (size_t)n_fresh * sizeof *fresh);
+    G->n_pending += n_fresh;
+    return WK_OK;
+}
+
+static int cmp_u32(const void *a, const void *b) {
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static bool pending_has(const mc_piece_grid *G, uint32_t v) {
+    return bsearch(&v, G->pending, G->n_pending, sizeof v, cmp_u32) != NULL;
+}
+
+/* List the pieces next to the pending fresh vertices still alive, with
+** hulls from t (the shot's time: they are current now, so their positions
+** from t on are what the shots of this window can meet).  Each piece once:
+** (f, next) for every pending f, (prev, f) unless prev is pending (a vertex
+** is fresh in one group only, so the list has no repeats). */
+static wk_status flush_pending(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, double t) {
     uint64_t before = G->listed;
-    for (uint32_t i = 0; i < n_fresh; i++) {
-        uint32_t f = fresh[i];
+    qsort(G->pending, G->n_pending, sizeof *G->pending, cmp_u32);
+    for (uint32_t i = 0; i < G->n_pending; i++) {
+        uint32_t f = G->pending[i];
         if (!wk_wf_alive(W, f)) continue;
         uint32_t p = wk_wf_prev(W, f);
         if (list_piece(R, G, W, f, wk_wf_next(W, f), t) != WK_OK ||
-            list_piece(R, G, W, p, f, t) != WK_OK) {
+            (!pending_has(G, p) && list_piece(R, G, W, p, f, t) != WK_OK)) {
             G->valid = false; /* a partial update is no index */
+            G->n_pending = 0;
             return WK_ENOMEM;
         }
     }
+    G->n_pending = 0;
     wk_count(R, WK_VC_piece_grid_entries, G->listed - before);
     return WK_OK;
 }
@@ -353,6 +433,9 @@ uint32_t mc_pg_shoot(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, wk_poin
         if (R->opt.check_invariants) est = 0;
         if (G->since >= est && (*st = build(R, G, W, t)) != WK_OK) G->valid = false;
     }
+    /* the reshoot below (at `later`, within the window) reads the same
+    ** listing: hulls from t cover it */
+    if (G->valid && t >= G->t_b && G->n_pending) *st = flush_pending(R, G, W, t);
     hit h = shoot_at(R, G, W, o, u, v, t, lambda0);
     if (h.a != WK_NONE && h.at_end && v != WK_NONE) {
         /* a hit at a vertex is ambiguous: again a moment later, when that

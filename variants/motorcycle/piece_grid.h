@@ -15,7 +15,11 @@
 ** which include the hull's edges).  The grid is built for all alive pieces
 ** at t_b (a "build"), valid until t_e = t_b + window, and kept valid after
 ** every group by listing the pieces next to the group's fresh vertices from
-** that moment on.  A piece whose ends changed is not current any more
+** that moment on.  That listing is lazy: the groups only note their fresh
+** vertices, and the next grid shot lists the pieces next to those still
+** alive, from the shot's time on (coastline 10^6: 900k groups against 10k
+** shots; most pieces a group makes are gone before the next shot, and the
+** hulls of the others are shorter).  A piece whose ends changed is not current any more
 ** ("piece (a, b) exists" is "a alive and next(a) == b", wavefront.h); its
 ** entries are stale and are dropped when a shot meets them.  A piece whose
 ** hull would cover many more cells than its length (a very fast vertex: a
@@ -66,13 +70,16 @@ typedef struct mc_piece_grid {
     uint64_t est;          /* entries of the last build (the cost of the next) */
     uint32_t *over;        /* overflow: pieces tested at every grid shot (a, b) */
     uint32_t n_over, cap_over; /* pairs; capacity in ids */
+    uint32_t *pending;     /* fresh vertices of the groups since the last shot or build,
+                              whose pieces are listed at the next grid shot */
+    uint32_t n_pending, cap_pending;
 } mc_piece_grid;
 
 /* Empty, closable, no allocation. */
 void mc_pg_init(mc_piece_grid *G);
 void mc_pg_clear(wk_run *R, mc_piece_grid *G);
-/* After a group at time t: list the pieces next to its fresh vertices (if
-** the grid is valid and t within its window). */
+/* After a group at time t: note its fresh vertices, whose pieces the next
+** grid shot lists (if the grid is valid and t within its window). */
 wk_status mc_pg_after_group(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, double t);
 /* The first piece the ray o + lambda u (lambda > lambda0) meets at time t,
 ** over the grid or v's cycle (see above), with wk_wf_ray_shoot's reshoot
