@@ -127,13 +127,26 @@ static double dist2(wk_point a, wk_point b) {
 }
 
 /* Two vertices within the contact distance now that were so when the
-** younger was born came out of one point (an event point resolved
-** already, or input vertices closer than the contact distance): no new
+** younger was born came out of one event point resolved already: no new
 ** contact between a vertex and the piece that ends at the other.  Two
 ** that came together since (vertex-on-vertex; the far ends of a region
 ** collapsing along its whole length, as in integer-weighted combs) meet
-** now: skipping them would lose the event and leave a spike alive. */
-static bool together_since_birth(const df_vertex *V, const df_vertex *W, double c2) {
+** now: skipping them would lose the event and leave a spike alive.
+** A reflex input vertex v and another input vertex w (ids below the
+** input's n) did not come out of one point: they are the ends of an input
+** edge shorter than the contact distance, whose direction the tolerance
+** cannot tell, and v meets the piece at w at t = 0, as a reflex vertex
+** within eps_d of a piece's line splits it at once in the engine's
+** wavefront (whose split search asks reflex vertices only).  Skipping them
+** kept a sub-tolerance chamfer of a reflex corner growing, and with
+** weights its face took a wedge of the neighbours' regions (stress cases
+** s1-c00105, s1-c00220, s1-c00243).  A convex or straight vertex at the
+** end of a tiny edge stays: there the edge collapses or grows by the
+** motion of its ends (an edge swap, or none), again as in the engine. */
+static bool together_since_birth(const df_state *D, uint32_t v, uint32_t w, double c2) {
+    const df_vertex *V = &D->v[v], *W = &D->v[w];
+    if (v < D->P->n && w < D->P->n && wk_is_reflex_turn(&D->L[V->ein], &D->L[V->eout]))
+        return false;
     double tb = V->t0 > W->t0 ? V->t0 : W->t0;
     return dist2(df_pos(V, tb), df_pos(W, tb)) <= c2;
 }
@@ -148,8 +161,8 @@ static wk_status contact(df_state *D, uint32_t p, uint32_t a, double t, double t
     const wk_offset_line *L = &D->L[A->eout];
     wk_point p0 = df_pos(V, t), a0 = df_pos(A, t), b0 = df_pos(B, t);
     double c2 = eps_c * eps_c;
-    if ((dist2(p0, a0) <= c2 && together_since_birth(V, A, c2)) ||
-        (dist2(p0, b0) <= c2 && together_since_birth(V, B, c2)))
+    if ((dist2(p0, a0) <= c2 && together_since_birth(D, p, a, c2)) ||
+        (dist2(p0, b0) <= c2 && together_since_birth(D, p, A->next, c2)))
         return WK_OK;
     if (te < t) te = t;
     if (te > t1) te = t1;
