@@ -357,13 +357,13 @@ static wk_status resolve(df_state *D, double te) {
         if (E->kind == DF_COLLAPSE) {
             uint32_t a = E->a, b = D->v[a].next;
             wk_point pa = df_pos(&D->v[a], te), pb = df_pos(&D->v[b], te);
-            wk_point X = {0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y)};
+            wk_point X = E->at_x ? E->x : (wk_point){0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y)};
             if (point_at(D, X, eps_c, &k) != WK_OK || add_member(D, a, k) != WK_OK ||
                 add_member(D, b, k) != WK_OK)
                 return R->err.code;
             wk_notify_event(R, WK_VC_edge_swaps, &(wk_event){te, X.x + D->o.x, X.y + D->o.y, a, b, WK_NONE});
         } else {
-            wk_point X = df_pos(&D->v[E->a], te);
+            wk_point X = E->at_x ? E->x : df_pos(&D->v[E->a], te);
             if (point_at(D, X, eps_c, &k) != WK_OK || add_member(D, E->a, k) != WK_OK)
                 return R->err.code;
             S->ckind[k] |= E->kind == DF_MERGE ? DF_POINT_MERGE : DF_POINT_SPLIT;
