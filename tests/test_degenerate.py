@@ -58,7 +58,7 @@ DATA = os.path.join(tl.DATA, "degenerate")
 SKIPPED_INPUT = "skipped inputs (rejected by the reader)"
 DEGENERATED = "skipped inputs (degenerated away)"
 VARIANTS = [["arrangement", "--k", "1"], ["arrangement", "--k", "max"], ["monotone"],
-            ["motorcycle"]]
+            ["motorcycle"], ["deforming"]]
 
 
 def star_grid(rng, m, g):
