@@ -136,12 +136,14 @@ static double dist2(wk_point a, wk_point b) {
 ** A reflex input vertex v and another input vertex w (ids below the
 ** input's n) did not come out of one point: they are the ends of an input
 ** edge shorter than the contact distance, whose direction the tolerance
-** cannot tell, and v meets the piece at w at t = 0, as a reflex vertex
+** cannot tell (or the polygon nearly touches itself there), and v meets
+** the piece at w at t = 0, as a reflex vertex
 ** within eps_d of a piece's line splits it at once in the engine's
 ** wavefront (whose split search asks reflex vertices only).  Skipping them
 ** kept a sub-tolerance chamfer of a reflex corner growing, and with
-** weights its face took a wedge of the neighbours' regions (stress cases
-** s1-c00105, s1-c00220, s1-c00243).  A convex or straight vertex at the
+** weights its face took a wedge of the neighbours' regions
+** (tests/data/degenerate/deform_tiny_reflex_chamfer_*.wpoly, stress cases
+** of the quick sweep).  A convex or straight vertex at the
 ** end of a tiny edge stays: there the edge collapses or grows by the
 ** motion of its ends (an edge swap, or none), again as in the engine. */
 static bool together_since_birth(const df_state *D, uint32_t v, uint32_t w, double c2) {
