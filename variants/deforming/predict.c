@@ -263,7 +263,15 @@ static int event_cmp_void(const void *x, const void *y) { return event_cmp(x, y)
 
 wk_status df_predict(df_state *D, double *t_event) {
     wk_run *R = D->R;
-    double t = D->t, t1 = D->t + D->dt;
+    /* The search reaches eps_t past the step's end: the events of one group
+    ** may straddle it (a collapse whose interpolated time is the end, 1e-15
+    ** before 2, and a head-on contact at 2 from the input lines: resolved
+    ** apart, the collinear rule of the first swept a piece the second
+    ** should have ended, and the skeleton failed the validator; the
+    ** integer-weighted rectilinear polygon of the family sweep, n = 1000,
+    ** went to the reference). */
+    double t = D->t, t1 = D->t + D->dt + D->eps_t;
+    if (D->R->opt.height > 0 && t1 > D->R->opt.height) t1 = D->R->opt.height; /* the cap's time */
     double eps_c = WK_DEFORM_CONTACT_SLACK * D->eps_d;
     D->n_ev = 0;
     D->best = INFINITY;
