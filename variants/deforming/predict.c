@@ -134,10 +134,10 @@ static double dist2(wk_point a, wk_point b) {
 ** collapsing along its whole length, as in integer-weighted combs) meet
 ** now: skipping them would lose the event and leave a spike alive.
 ** A reflex input vertex v and another input vertex w (ids below the
-** input's n) did not come out of one point: they are the ends of an input
-** edge shorter than the contact distance, whose direction the tolerance
-** cannot tell (or the polygon nearly touches itself there), and v meets
-** the piece at w at t = 0, as a reflex vertex
+** input's n) at the ends of one input edge did not come out of one
+** point: the edge is shorter than the contact distance, its direction
+** the tolerance cannot tell, and v meets the piece at w at t = 0, as a
+** reflex vertex
 ** within eps_d of a piece's line splits it at once in the engine's
 ** wavefront (whose split search asks reflex vertices only).  Skipping them
 ** kept a sub-tolerance chamfer of a reflex corner growing, and with
@@ -145,10 +145,15 @@ static double dist2(wk_point a, wk_point b) {
 ** (tests/data/degenerate/deform_tiny_reflex_chamfer_*.wpoly, stress cases
 ** of the quick sweep).  A convex or straight vertex at the
 ** end of a tiny edge stays: there the edge collapses or grows by the
-** motion of its ends (an edge swap, or none), again as in the engine. */
+** motion of its ends (an edge swap, or none), again as in the engine.
+** Input vertices of two rings (holes nearly touching) keep the old rule:
+** taking them as met put a node where CGAL and naive do not
+** (tests/data/fuzz/mismatch_arrangement_motorcycle_holes_touching.wpoly). */
 static bool together_since_birth(const df_state *D, uint32_t v, uint32_t w, double c2) {
     const df_vertex *V = &D->v[v], *W = &D->v[w];
-    if (v < D->P->n && w < D->P->n && wk_is_reflex_turn(&D->L[V->ein], &D->L[V->eout]))
+    if (v < D->P->n && w < D->P->n &&
+        (wk_polygon_next(D->P, v) == w || wk_polygon_prev(D->P, v) == w) &&
+        wk_is_reflex_turn(&D->L[V->ein], &D->L[V->eout]))
         return false;
     double tb = V->t0 > W->t0 ? V->t0 : W->t0;
     return dist2(df_pos(V, tb), df_pos(W, tb)) <= c2;
