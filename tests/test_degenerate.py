@@ -53,10 +53,10 @@ TURNED_CASES = int(os.environ.get("WSKEL_TURNED_CASES", "60"))
 # collapsing flat cycles and is kept as tests/data/degenerate/flat_cycle_far.wpoly.
 KNOWN_FAILURES = {}
 # The same for the generated cases (test_generated), seed -> the text of the
-# failure.  1893: a rectilinear polygon of weights 1 and 2 where collinear
-# edges 3 and 17 (weight 1) join across a notch; deforming puts the node of
-# faces 3, 17, 20 at t = 2 instead of naive's 1.5 (issue 14, not fixed).
-KNOWN_GENERATED = {1893: "deforming differs from naive"}
+# failure.  Empty now: 1893 (deforming's collinear rule covered a swept piece
+# of weight 2 between weight-1 pieces by the piece after it) is fixed and
+# kept as tests/data/degenerate/deform_collinear_run_cover.wpoly.
+KNOWN_GENERATED = {}
 DATA = os.path.join(tl.DATA, "degenerate")
 # Kinds of skipped inputs (Tally.skip): counted and every one named in the
 # report; the tests say which inputs are required (a skip is a failure).

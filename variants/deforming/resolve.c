@@ -297,18 +297,37 @@ static wk_status fresh_node_at(df_state *D, uint32_t x, double te, uint32_t *nod
 ** parallel edges of different weight, so the rule repeats.  fresh: push
 ** the new vertices on the resolution's list (false at t = 0, where no
 ** resolution runs). */
+static bool df_is_collinear(const df_state *D, uint32_t x) {
+    const df_vertex *X = &D->v[x];
+    wk_point vel;
+    return X->alive &&
+           wk_vertex_velocity(&D->L[X->ein], &D->L[X->eout], &vel) == WK_VEL_COLLINEAR;
+}
+
 wk_status df_collinear_rule(df_state *D, uint32_t x, double te, bool fresh) {
     wk_run *R = D->R;
-    for (uint32_t guard = 0; guard <= D->nv; guard++) {
+    uint32_t x0 = x; /* asked for; done once it is no longer collinear */
+    for (uint32_t guard = 0; guard <= 2 * D->nv + 2; guard++) {
+        if (!df_is_collinear(D, x)) {
+            if (x == x0 || !df_is_collinear(D, x0)) return WK_OK;
+            x = x0; /* the rule ran from a vertex before x0: x0 is left */
+        }
         df_vertex *X = &D->v[x];
-        wk_point vel;
-        if (!X->alive || wk_vertex_velocity(&D->L[X->ein], &D->L[X->eout], &vel) != WK_VEL_COLLINEAR)
-            return WK_OK;
         uint32_t y = X->next, w = X->prev;
         if (y == w || y == x) return WK_OK; /* a cycle of two: the clean-up's */
         double w_in = D->L[X->ein].w, w_out = D->L[X->eout].w;
         bool lower = R->opt.collinear == WK_COLLINEAR_LOWER;
         bool out_loses = lower ? w_out > w_in : w_out < w_in;
+        /* A losing piece between two parallel ones is covered by the piece
+        ** before it, as the engine's rule (wf_collinear_rule) does on a run
+        ** of parallel pieces: the rule runs from the vertex at the losing
+        ** piece's start.  Covering it by the piece after moved the boundary
+        ** of their faces from one end of the swept piece to the other
+        ** (tests/test_degenerate.py generated case 1893: weights 1, 2, 1). */
+        if (!out_loses && w != x0 && df_is_collinear(D, w)) {
+            x = w;
+            continue;
+        }
         /* the losing piece runs a -> b; the far vertex f is b or a */
         uint32_t a = out_loses ? x : w, b = out_loses ? y : x, f = out_loses ? y : w;
         uint32_t win = out_loses ? X->ein : X->eout, lose = out_loses ? X->eout : X->ein;
