@@ -47,10 +47,16 @@
 /* A variant that steps a moving polygon (004): a vertex within WK_DEFORM_CONTACT_SLACK *
 ** eps_d of an event point takes part in it, and a penetration counts when
 ** the vertex meets the piece within that distance of the piece's ends (a
-** vertex-on-vertex contact).  16 as WK_REFINE_DIST_SLACK: the error of a
-** constructed event point (a few eps_d at worst) with room to spare, still
-** 60000 times below the validator's tolerance. */
-#define WK_DEFORM_CONTACT_SLACK 16.0
+** vertex-on-vertex contact).  1, the wavefront's own bar (its split search
+** takes a vertex within eps_d of a piece as on it, and keeps events farther
+** apart separate).  It was 16 (as WK_REFINE_DIST_SLACK), and the stepping
+** variant then merged what the wavefront keeps apart: a step of 14 eps_d
+** left between collinear edges by a collapsing tab (stress case
+** s1-c00288-far), events 14 eps_d apart at the centre of a regular 64-gon
+** perturbed by 1e-7; both gave valid skeletons that were not the
+** reference's.  Its event points come from the input lines or the
+** speed-weighted collapse point, within the rounding of eps_d. */
+#define WK_DEFORM_CONTACT_SLACK 1.0
 /* eps_t = WK_TOL_TIME * eps_d / wmax.  Simultaneous means equal up to the
 ** rounding of a constructed time (~1e-15 relative); a window as wide as
 ** eps_d / wmax would merge events that happen in sequence, and fast

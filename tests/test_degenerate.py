@@ -52,13 +52,18 @@ TURNED_CASES = int(os.environ.get("WSKEL_TURNED_CASES", "60"))
 # wavefront vertex", walls at equal levels 1e5 from the origin) was fixed by
 # collapsing flat cycles and is kept as tests/data/degenerate/flat_cycle_far.wpoly.
 KNOWN_FAILURES = {}
+# The same for the generated cases (test_generated), seed -> the text of the
+# failure.  Empty now: 1893 (deforming's collinear rule covered a swept piece
+# of weight 2 between weight-1 pieces by the piece after it) is fixed and
+# kept as tests/data/degenerate/deform_collinear_run_cover.wpoly.
+KNOWN_GENERATED = {}
 DATA = os.path.join(tl.DATA, "degenerate")
 # Kinds of skipped inputs (Tally.skip): counted and every one named in the
 # report; the tests say which inputs are required (a skip is a failure).
 SKIPPED_INPUT = "skipped inputs (rejected by the reader)"
 DEGENERATED = "skipped inputs (degenerated away)"
 VARIANTS = [["arrangement", "--k", "1"], ["arrangement", "--k", "max"], ["monotone"],
-            ["motorcycle"]]
+            ["motorcycle"], ["deforming"]]
 
 
 def star_grid(rng, m, g):
@@ -310,8 +315,18 @@ class Degenerate(unittest.TestCase):
                 continue
             pts, w = case
             path = self.write(pts, w, "test_degenerate.py case %d" % seed)
+            if seed in KNOWN_GENERATED:
+                sub = tl.Tally("case %d" % seed)
+                self.check_case(sub, "case %d" % seed, path)
+                got = sub.failures
+                if not got or not all(KNOWN_GENERATED[seed] in g for g in got):
+                    t.case(["case %d: known failure '%s' changed: %s" %
+                            (seed, KNOWN_GENERATED[seed], got or "now passes")], path)
+                else:
+                    t.skip("case %d" % seed, "known failures")
+                continue
             self.check_case(t, "case %d" % seed, path)
-        t.report(self, list_skipped=[DEGENERATED])
+        t.report(self, list_skipped=[DEGENERATED, "known failures"])
         self.assertGreater(t.cases, 0, t.summary())
         # A few may degenerate away; most must run.
         self.assertGreaterEqual(t.cases, 0.9 * CASES, t.summary())

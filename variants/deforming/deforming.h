@@ -52,9 +52,14 @@ typedef struct df_vertex {
 ** weights <= 0: the swept region between them closes, the unswept region
 ** joins; 004 Fig. 11b). */
 typedef enum df_event_kind { DF_COLLAPSE = 0, DF_PENETRATION = 1, DF_MERGE = 2 } df_event_kind;
+/* x: where the event happens (relative coordinates) when its time came
+** from the input lines (wk_three_lines_meet; at_x set), else the resolution
+** takes the vertices' places at the group's time. */
 typedef struct df_event {
     double t;
     uint32_t kind, a, b;
+    wk_point x;
+    bool at_x;
 } df_event;
 
 typedef struct df_state {

@@ -68,11 +68,12 @@ static bool cells(const grid *G, box b, double pad, uint32_t *i0, uint32_t *j0, 
 /* Only the earliest events of a step matter (the corrector goes back to
 ** the first one): an event later than the best so far plus eps_t is
 ** dropped at once, so a long step does not collect every later event. */
-static wk_status push_event(df_state *D, double t, uint32_t kind, uint32_t a, uint32_t b) {
+static wk_status push_event(df_state *D, double t, uint32_t kind, uint32_t a, uint32_t b,
+                            const wk_point *x) {
     if (t > D->best + D->eps_t) return WK_OK;
     if (t < D->best) D->best = t;
     if (WK_GROW(D->R, D->ev, D->cap_ev, D->n_ev + 1) != WK_OK) return D->R->err.code;
-    D->ev[D->n_ev++] = (df_event){t, kind, a, b};
+    D->ev[D->n_ev++] = (df_event){t, kind, a, b, x ? *x : (wk_point){0, 0}, x != NULL};
     return WK_OK;
 }
 
@@ -116,10 +117,10 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     double t3;
     if (l0 > 0 && wk_three_lines_meet(&D->L[A->ein], L, &D->L[B->eout], &m, &t3) && t3 >= t &&
         t3 <= t1)
-        te = t3;
+        return push_event(D, t3, DF_COLLAPSE, a, WK_NONE, &m);
     if (te < t) te = t;
     if (te > t1) te = t1;
-    return push_event(D, te, DF_COLLAPSE, a, WK_NONE);
+    return push_event(D, te, DF_COLLAPSE, a, WK_NONE, NULL);
 }
 
 static double dist2(wk_point a, wk_point b) {
@@ -127,13 +128,33 @@ static double dist2(wk_point a, wk_point b) {
 }
 
 /* Two vertices within the contact distance now that were so when the
-** younger was born came out of one point (an event point resolved
-** already, or input vertices closer than the contact distance): no new
+** younger was born came out of one event point resolved already: no new
 ** contact between a vertex and the piece that ends at the other.  Two
 ** that came together since (vertex-on-vertex; the far ends of a region
 ** collapsing along its whole length, as in integer-weighted combs) meet
-** now: skipping them would lose the event and leave a spike alive. */
-static bool together_since_birth(const df_vertex *V, const df_vertex *W, double c2) {
+** now: skipping them would lose the event and leave a spike alive.
+** A reflex input vertex v and another input vertex w (ids below the
+** input's n) at the ends of one input edge did not come out of one
+** point: the edge is shorter than the contact distance, its direction
+** the tolerance cannot tell, and v meets the piece at w at t = 0, as a
+** reflex vertex
+** within eps_d of a piece's line splits it at once in the engine's
+** wavefront (whose split search asks reflex vertices only).  Skipping them
+** kept a sub-tolerance chamfer of a reflex corner growing, and with
+** weights its face took a wedge of the neighbours' regions
+** (tests/data/degenerate/deform_tiny_reflex_chamfer_*.wpoly, stress cases
+** of the quick sweep).  A convex or straight vertex at the
+** end of a tiny edge stays: there the edge collapses or grows by the
+** motion of its ends (an edge swap, or none), again as in the engine.
+** Input vertices of two rings (holes nearly touching) keep the old rule:
+** taking them as met put a node where CGAL and naive do not
+** (tests/data/fuzz/mismatch_arrangement_motorcycle_holes_touching.wpoly). */
+static bool together_since_birth(const df_state *D, uint32_t v, uint32_t w, double c2) {
+    const df_vertex *V = &D->v[v], *W = &D->v[w];
+    if (v < D->P->n && w < D->P->n &&
+        (wk_polygon_next(D->P, v) == w || wk_polygon_prev(D->P, v) == w) &&
+        wk_is_reflex_turn(&D->L[V->ein], &D->L[V->eout]))
+        return false;
     double tb = V->t0 > W->t0 ? V->t0 : W->t0;
     return dist2(df_pos(V, tb), df_pos(W, tb)) <= c2;
 }
@@ -143,13 +164,13 @@ static bool together_since_birth(const df_vertex *V, const df_vertex *W, double 
 ** kind if p lies within the piece's extent then and did not come out of an
 ** end of the piece (see together_since_birth). */
 static wk_status contact(df_state *D, uint32_t p, uint32_t a, double t, double t1, double te,
-                         double eps_c, uint32_t kind) {
+                         const wk_point *x, double eps_c, uint32_t kind) {
     const df_vertex *V = &D->v[p], *A = &D->v[a], *B = &D->v[A->next];
     const wk_offset_line *L = &D->L[A->eout];
     wk_point p0 = df_pos(V, t), a0 = df_pos(A, t), b0 = df_pos(B, t);
     double c2 = eps_c * eps_c;
-    if ((dist2(p0, a0) <= c2 && together_since_birth(V, A, c2)) ||
-        (dist2(p0, b0) <= c2 && together_since_birth(V, B, c2)))
+    if ((dist2(p0, a0) <= c2 && together_since_birth(D, p, a, c2)) ||
+        (dist2(p0, b0) <= c2 && together_since_birth(D, p, A->next, c2)))
         return WK_OK;
     if (te < t) te = t;
     if (te > t1) te = t1;
@@ -163,7 +184,7 @@ static wk_status contact(df_state *D, uint32_t p, uint32_t a, double t, double t
     ** looks like one). */
     if (kind == DF_MERGE && ((a == V->next && s <= eps_c) || (A->next == V->prev && s >= len - eps_c)))
         return WK_OK;
-    return push_event(D, te, kind, p, a);
+    return push_event(D, te, kind, p, a, x);
 }
 
 /* Penetration of vertex p through the piece a -> next(a) within [t, t1]. */
@@ -191,7 +212,7 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
             -(L->nx * Li->ux + L->ny * Li->uy) > WK_PARALLEL_SIN)
             return WK_OK;
         return contact(D, p, a, t, t1, g0 >= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate),
-                       eps_c, DF_MERGE);
+                       NULL, eps_c, DF_MERGE);
     }
     /* approaching from the inside (the wavefront is on the inner side of
     ** each of its pieces) and on the line by t1 */
@@ -206,8 +227,21 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     if (L->nx * Lout->ux + L->ny * Lout->uy < -WK_PARALLEL_SIN &&
         -(L->nx * Lin->ux + L->ny * Lin->uy) < -WK_PARALLEL_SIN)
         return WK_OK;
-    return contact(D, p, a, t, t1, g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate), eps_c,
-                   DF_PENETRATION);
+    /* The vertex lies on the lines of its two edges, so it reaches the
+    ** piece's line where the three lines meet: taken from the input lines
+    ** when that falls in the step (as test_swap does, and the engine's
+    ** refine for splits).  The root of the gap needs the vertex's velocity,
+    ** which between nearly antiparallel edges is huge and inexact: a vertex
+    ** racing up a spike 1e10 long whose sides are 1e-10 apart met the far
+    ** side at t 0.78 instead of 0.93, 1e5 short of the node
+    ** (tests/data/fuzz/mismatch_deforming_regular5_far_node.wpoly). */
+    wk_point m;
+    double t3;
+    if (g0 > 0 && wk_three_lines_meet(&D->L[V->ein], &D->L[V->eout], L, &m, &t3) && t3 >= t &&
+        t3 <= t1)
+        return contact(D, p, a, t, t1, t3, &m, eps_c, DF_PENETRATION);
+    return contact(D, p, a, t, t1, g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate), NULL,
+                   eps_c, DF_PENETRATION);
 }
 
 /* The event's configuration at te: a collapsing piece no longer than eps_c,
@@ -234,7 +268,15 @@ static int event_cmp_void(const void *x, const void *y) { return event_cmp(x, y)
 
 wk_status df_predict(df_state *D, double *t_event) {
     wk_run *R = D->R;
-    double t = D->t, t1 = D->t + D->dt;
+    /* The search reaches eps_t past the step's end: the events of one group
+    ** may straddle it (a collapse whose interpolated time is the end, 1e-15
+    ** before 2, and a head-on contact at 2 from the input lines: resolved
+    ** apart, the collinear rule of the first swept a piece the second
+    ** should have ended, and the skeleton failed the validator; the
+    ** integer-weighted rectilinear polygon of the family sweep, n = 1000,
+    ** went to the reference). */
+    double t = D->t, t1 = D->t + D->dt + D->eps_t;
+    if (D->R->opt.height > 0 && t1 > D->R->opt.height) t1 = D->R->opt.height; /* the cap's time */
     double eps_c = WK_DEFORM_CONTACT_SLACK * D->eps_d;
     D->n_ev = 0;
     D->best = INFINITY;
