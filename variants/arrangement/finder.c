@@ -545,11 +545,20 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
     uint32_t si = wk_event_queue_pop(R, &A->Q);
     ar_seg *S = &A->s[si];
     double t = wk_wf_now(W);
-    /* Defensive: F bouncing between two pieces at one vertex would never
-    ** end; every legitimate burst at one instant is bounded by the number of
-    ** segment-piece incidences. */
-    A->guard_n = t == A->guard_t ? A->guard_n + 1 : 0;
-    A->guard_t = t;
+    /* Progress guard.  F bouncing between two pieces at one vertex would
+    ** never end; every legitimate burst of finder events within one eps_t
+    ** (events that close are simultaneous, tolerance.h) is bounded by the
+    ** number of segment-piece incidences.  The window is anchored at its
+    ** first event and does not slide: a bounce whose next event is one ulp
+    ** later each time (a fuzz finding, tests/data/fuzz/
+    ** timeout_arrangement_monotone18.wpoly, 60 million switch events one
+    ** ulp apart) advances t, and a test of t == last t never fired. */
+    if (A->guard_n > 0 && t <= A->guard_t + wk_wf_eps_t(W)) {
+        A->guard_n++;
+    } else {
+        A->guard_t = t;
+        A->guard_n = 1;
+    }
     if (A->guard_n > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024)
         return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "arrangement: no progress at t = %.17g", t);
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
@@ -572,9 +581,16 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
             if (place_f(A, W, si, t) != WK_OK) return R->err.code;
             /* The shot disagrees with the event (rounding right at a
             ** corner): F is left unknown, v's split is searched directly
-            ** until the next group places F again.  Keeps progress. */
+            ** until the next group places F again.  Keeps progress.  "At
+            ** once" is within eps_t, not <= t: at a corner where the ray
+            ** meets the piece at a shallow angle, F within rounding of the
+            ** corner vertex gets an exit time a few ulps ahead, the shot put
+            ** it back on the same piece, and it left again one ulp later,
+            ** 60 million times on an 18-vertex polygon (timeout_arrangement_
+            ** monotone18.wpoly in tests/data/fuzz). */
             seg_event(A, W, si);
-            if (A->s[si].pa == old_pa && A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t) {
+            if (A->s[si].pa == old_pa && A->s[si].ev_kind == AR_SWITCH &&
+                A->s[si].ev_t <= t + wk_wf_eps_t(W)) {
                 unlink_f(A, si);
                 A->n_unknown++;
             }
