@@ -55,6 +55,15 @@ static void reflex_motion(const wk_polygon *P, uint32_t v, wk_aseg *g) {
     g->speed = speed;
 }
 
+/* Distance from point a to edge e of P. */
+static double edge_distance(const wk_polygon *P, uint32_t e, wk_point a) {
+    wk_point p = P->p[e], q = P->p[wk_polygon_next(P, e)];
+    double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
+    double m = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
+    m = m < 0 ? 0 : m > 1 ? 1 : m;
+    return hypot(p.x + m * dx - a.x, p.y + m * dy - a.y);
+}
+
 /* A ray that meets nothing: its origin, vertex v, lies within tol of an
 ** edge other than its own two (a tiny edge next to v: v's neighbour across
 ** it, and that neighbour's other edge, are within tol of v).  The shooter
@@ -72,10 +81,7 @@ static bool hit_at_origin(const wk_polygon *P, double tol, uint32_t v, wk_point 
         if (e == v || e == prev) continue;
         uint32_t f = wk_polygon_next(P, e);
         wk_point p = P->p[e], q = P->p[f];
-        double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
-        double m = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
-        m = m < 0 ? 0 : m > 1 ? 1 : m;
-        double d = hypot(p.x + m * dx - a.x, p.y + m * dy - a.y);
+        double d = edge_distance(P, e, a);
         if (d <= tol && d < best) {
             best = d;
             bw = hypot(p.x - a.x, p.y - a.y) <= hypot(q.x - a.x, q.y - a.y) ? e : f;
@@ -86,6 +92,50 @@ static bool hit_at_origin(const wk_polygon *P, double tol, uint32_t v, wk_point 
     double t = (w.x - a.x) * u.x + (w.y - a.y) * u.y;
     *h = (wk_ray_hit){t > 0 ? t : 0, w, WK_NONE, bw};
     return true;
+}
+
+/* True if edge e is one of the pieces the finder's near_split tests for v
+** at t = 0 (wk_wf_near_split: the pieces next to v's own two, and on past
+** neighbours within WK_ARR_NEAR_SLACK tol of v): those contacts have their
+** own test, and v's ray still finds F (hit_at_origin). */
+static bool near_chain_edge(const wk_polygon *P, uint32_t v, uint32_t e, double near) {
+    wk_point pv = P->p[v];
+    for (uint32_t a = wk_polygon_next(P, v); a != v && wk_polygon_next(P, a) != v;
+         a = wk_polygon_next(P, a)) {
+        if (e == a) return true;
+        if (!(hypot(P->p[a].x - pv.x, P->p[a].y - pv.y) <= near)) break;
+    }
+    for (uint32_t b = wk_polygon_prev(P, v); b != v && wk_polygon_prev(P, b) != v;
+         b = wk_polygon_prev(P, b)) {
+        if (e == wk_polygon_prev(P, b)) return true;
+        if (!(hypot(P->p[b].x - pv.x, P->p[b].y - pv.y) <= near)) break;
+    }
+    return false;
+}
+
+/* True if reflex vertex v lies within the shooter's tol of an edge other
+** than its own two and the ones near_split covers: a contact at t = 0 with
+** another part of the boundary (a pinch narrower than the tolerance).  The
+** reference's split test takes such a vertex as splitting that edge's
+** piece at once, but the ray along v's motion may miss it: a ray through a
+** pinch 1.7e-10 wide (tol 0.43) passes the vertex on the other side within
+** tol of the ray's line (no crossing of either of its edges) and met the
+** boundary beyond the pinch, where v then split a piece it could never
+** reach (tests/data/fuzz/ealgo_arrangement_still_alive.wpoly: a wavefront
+** vertex left alive, exit 2).  The grid cell of v lists every edge within
+** 2 tol of it, so O(cell) per vertex. */
+static bool contact_at_origin(const wk_ray_shooter *sh, uint32_t v) {
+    const wk_polygon *P = sh->P;
+    const wk_seg_grid *G = &sh->G;
+    wk_point a = P->p[v];
+    uint32_t prev = wk_polygon_prev(P, v);
+    uint32_t c = wk_seg_grid_row(G, a.y) * G->nx + wk_seg_grid_col(G, a.x);
+    for (uint32_t k = G->start[c]; k < G->start[c + 1]; k++) {
+        uint32_t e = G->items[k];
+        if (e == v || e == prev || !(edge_distance(P, e, a) <= sh->tol)) continue;
+        if (!near_chain_edge(P, v, e, WK_ARR_NEAR_SLACK * sh->tol)) return true;
+    }
+    return false;
 }
 
 wk_status wk_arrangement_segments(wk_run *R, const wk_polygon *P, wk_aseg **out, uint32_t *r_out) {
@@ -123,6 +173,7 @@ wk_status wk_arrangement_segments(wk_run *R, const wk_polygon *P, wk_aseg **out,
         g->hit = h;
         g->b = h.p;
         g->len = h.t;
+        g->contact = contact_at_origin(&sh, g->vertex);
     }
     wk_ray_shooter_clear(R, &sh);
     for (uint32_t j = 0; j < r; j++)

@@ -73,6 +73,10 @@ typedef struct wk_aseg {
     double speed;           /* |velocity| (distance per unit time) */
     double len;             /* distance from a to the hit along u */
     wk_ray_hit hit;         /* what was hit */
+    bool contact;           /* the vertex lies within the shooter's tol of
+                               an edge other than its own two and its
+                               neighbours' (a contact at t = 0 with another
+                               part of the boundary, which the ray may pass) */
 } wk_aseg;
 
 /* A(P): one segment per reflex vertex, in vertex order, shot in parallel

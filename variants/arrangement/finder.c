@@ -56,6 +56,14 @@
 
 enum { AR_SWITCH = 0, AR_START = 1, AR_FRONT = 2 };
 
+/* A switch whose ray shot puts F back on the piece it just left, with the
+** next switch due within rounding, is taken as a bounce; more than this
+** many bounces of one segment onto one piece within eps_t leave F unknown
+** (ar_process_next).  Rounding cascades end after one repeat on every
+** family of make regress at n = 3000; the bounce that never ends repeats
+** for ever. */
+#define AR_BOUNCE_MAX 8
+
 typedef struct ar_seg {
     uint32_t v;          /* its reflex vertex; WK_NONE once removed */
     uint32_t id;         /* id in both arrangements */
@@ -68,6 +76,8 @@ typedef struct ar_seg {
     double ev_t;         /* its next event */
     uint8_t ev_kind;
     uint8_t ev_end;      /* switch: 0 F leaves over pa, 1 over pb */
+    uint8_t contact;     /* v touched another part of P at t = 0 (wk_aseg):
+                            F stays unknown, v's splits are the reference's */
     uint32_t mark;       /* group stamp: already queued for placing */
 } ar_seg;
 
@@ -83,6 +93,10 @@ typedef struct ar_state {
     uint32_t *todo;      /* segments whose F must be placed again */
     uint32_t n_todo, cap_todo, stamp;
     uint32_t n_unknown;  /* segments whose F is unknown (pa == WK_NONE) */
+    uint32_t bounce_si, bounce_pa; /* the last switch that bounced back: its
+                            segment and piece, ... */
+    double bounce_t;     /* ... the time of its first bounce, ... */
+    uint32_t bounce_n;   /* ... and how many since within eps_t */
     double guard_t;      /* time of the last finder event ... */
     uint64_t guard_n;    /* ... and how many happened at that time */
 } ar_state;
@@ -253,7 +267,7 @@ static wk_status place_f(ar_state *A, wk_wavefront *W, uint32_t si, double t) {
 /* A new segment for reflex vertex v from its position at time t to where
 ** its ray meets the wavefront; F placed, next crossings not yet fetched. */
 static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double t,
-                                const wk_ray_hit *hit, uint32_t *out) {
+                                const wk_aseg *g, uint32_t *out) {
     wk_run *R = A->R;
     wk_point vel = wk_wf_velocity(W, v);
     double sp = hypot(vel.x, vel.y);
@@ -270,8 +284,17 @@ static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double
     /* At the start the grid ray shooter of engine/ray_shoot.h already
     ** found the boundary edge hit; a hit on a vertex (a corner) is left to
     ** the exact shot below.  Later segments shoot against their cycle. */
+    const wk_ray_hit *hit = g ? &g->hit : NULL;
     uint32_t a = WK_NONE;
-    if (hit && hit->edge != WK_NONE && hit->edge < wk_wf_vertex_count(W) && wk_wf_alive(W, hit->edge) &&
+    /* A contact at t = 0 with another part of P (a pinch below the
+    ** tolerance): the ray may pass it and find a piece beyond, which v can
+    ** never reach.  F stays unknown for v's life: the reference's scan
+    ** (brute_split) finds v's splits, the contact's first; the segment is
+    ** empty, so it cuts nothing. */
+    S->contact = g && g->contact;
+    if (S->contact)
+        a = WK_NONE;
+    else if (hit && hit->edge != WK_NONE && hit->edge < wk_wf_vertex_count(W) && wk_wf_alive(W, hit->edge) &&
         wk_wf_start_time(W, hit->edge) == 0 && wk_wf_edge_out(W, hit->edge) == hit->edge)
         a = hit->edge;
     else
@@ -290,7 +313,7 @@ static wk_status create_segment(ar_state *A, wk_wavefront *W, uint32_t v, double
     A->n_s++;
     A->seg_of[v] = si;
     if (a != WK_NONE) link_f(A, W, si, a);
-    else A->n_unknown++;
+    else if (!S->contact) A->n_unknown++; /* retried after the next group */
     *out = si;
     return WK_OK;
 }
@@ -393,7 +416,7 @@ static wk_status ar_start(void *ud, wk_wavefront *W) {
     for (uint32_t i = 0; st == WK_OK && i < r; i++) {
         uint32_t v = segs[i].vertex, si;
         if (!wk_wf_alive(W, v) || !wk_wf_reflex(W, v)) continue; /* changed by the collinear rule */
-        st = create_segment(A, W, v, 0.0, &segs[i].hit, &si);
+        st = create_segment(A, W, v, 0.0, &segs[i], &si);
     }
     if (segs) WK_FREE_ARRAY(R, segs, r);
     /* Reflex vertices the collinear rule made at t = 0 (ids >= n, or an
@@ -482,7 +505,8 @@ static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
     if (A->n_unknown) { /* rare: retry every F that is unknown */
         A->n_unknown = 0;
         for (uint32_t si = 0; si < A->n_s; si++)
-            if (A->s[si].v != WK_NONE && A->s[si].pa == WK_NONE && queue_todo(A, si) != WK_OK)
+            if (A->s[si].v != WK_NONE && A->s[si].pa == WK_NONE && !A->s[si].contact &&
+                queue_todo(A, si) != WK_OK)
                 return R->err.code;
     }
     for (uint32_t i = 0; i < A->n_todo; i++) {
@@ -545,11 +569,20 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
     uint32_t si = wk_event_queue_pop(R, &A->Q);
     ar_seg *S = &A->s[si];
     double t = wk_wf_now(W);
-    /* Defensive: F bouncing between two pieces at one vertex would never
-    ** end; every legitimate burst at one instant is bounded by the number of
-    ** segment-piece incidences. */
-    A->guard_n = t == A->guard_t ? A->guard_n + 1 : 0;
-    A->guard_t = t;
+    /* Progress guard.  F bouncing between two pieces at one vertex would
+    ** never end; every legitimate burst of finder events within one eps_t
+    ** (events that close are simultaneous, tolerance.h) is bounded by the
+    ** number of segment-piece incidences.  The window is anchored at its
+    ** first event and does not slide: a bounce whose next event is one ulp
+    ** later each time (a fuzz finding, tests/data/fuzz/
+    ** timeout_arrangement_monotone18.wpoly, 60 million switch events one
+    ** ulp apart) advances t, and a test of t == last t never fired. */
+    if (A->guard_n > 0 && t <= A->guard_t + wk_wf_eps_t(W)) {
+        A->guard_n++;
+    } else {
+        A->guard_t = t;
+        A->guard_n = 1;
+    }
     if (A->guard_n > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024)
         return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "arrangement: no progress at t = %.17g", t);
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
@@ -572,11 +605,30 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
             if (place_f(A, W, si, t) != WK_OK) return R->err.code;
             /* The shot disagrees with the event (rounding right at a
             ** corner): F is left unknown, v's split is searched directly
-            ** until the next group places F again.  Keeps progress. */
+            ** until the next group places F again.  Keeps progress.  Also
+            ** when the shot keeps putting F back on the piece it just left
+            ** (bounce_*, AR_BOUNCE_MAX times within eps_t): at a corner
+            ** where the ray meets the piece at a shallow angle, F within
+            ** rounding of the corner vertex gets an exit time a few ulps
+            ** ahead, and the switch re-fired one ulp later each time, 60
+            ** million times on an 18-vertex polygon (tests/data/fuzz/
+            ** timeout_arrangement_monotone18.wpoly). */
             seg_event(A, W, si);
-            if (A->s[si].pa == old_pa && A->s[si].ev_kind == AR_SWITCH && A->s[si].ev_t <= t) {
-                unlink_f(A, si);
-                A->n_unknown++;
+            const ar_seg *B = &A->s[si];
+            if (B->pa == old_pa && B->ev_kind == AR_SWITCH) {
+                if (A->bounce_si == si && A->bounce_pa == old_pa &&
+                    t <= A->bounce_t + wk_wf_eps_t(W)) {
+                    A->bounce_n++;
+                } else {
+                    A->bounce_si = si;
+                    A->bounce_pa = old_pa;
+                    A->bounce_t = t;
+                    A->bounce_n = 1;
+                }
+                if (B->ev_t <= t || A->bounce_n > AR_BOUNCE_MAX) {
+                    unlink_f(A, si);
+                    A->n_unknown++;
+                }
             }
         }
         S = &A->s[si];
@@ -664,6 +716,7 @@ static wk_status arrangement_run(wk_run *R, const wk_polygon *P, wk_skeleton **o
     ar_state A;
     memset(&A, 0, sizeof A);
     A.R = R;
+    A.bounce_si = WK_NONE;
     wk_arrangement_init(&A.fwd);
     wk_arrangement_init(&A.rev);
     wk_event_queue_init(&A.Q);

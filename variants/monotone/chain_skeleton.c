@@ -195,10 +195,18 @@ static wk_status schedule(sim *S, uint32_t a) {
     return wk_event_queue_set(S->M->R, &S->Q, a, (wk_event_key){t, 0});
 }
 
+/* Does vertex x take part in the event at `at`, time t?  Within eps_d, plus
+** what x moves within the time tolerance (the event's time is constructed).
+** At t = 0 (the collinear rule on input vertices) the time is exact and x
+** is at its input vertex: no time slack.  With it, the input vertex next to
+** a collinear pair, between edges at sine 4e-8 with weights 1 and 3 (speed
+** 5e7, so 416 units within eps_t, 99 away), was taken as arriving: the
+** pair's swept piece went to the wrong face, unlike the reference's rule
+** (tests/data/fuzz/mismatch_monotone_collinear_sliver.wpoly). */
 static bool arrives(const sim *S, uint32_t x, wk_point at, double t) {
     const mono_trace *v = &S->C->v[x];
     double speed = fabs(v->vel.x) + fabs(v->vel.y);
-    double r = S->M->eps_d + speed * S->M->eps_t;
+    double r = S->M->eps_d + (t > 0 ? speed * S->M->eps_t : 0);
     return dist2(wk_mono_trace_at(v, t), at) <= r * r;
 }
 

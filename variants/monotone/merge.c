@@ -42,6 +42,8 @@ typedef struct hit {
     double lambda;      /* distance along the ray */
     double mu;          /* distance along the trace from its start */
     uint32_t chain, trace, face; /* face: the edge on the trace's other side */
+    double uncertain;   /* where the ray meets a coplanar pair it cannot
+                           follow (test_trace), INFINITY if nowhere */
 } hit;
 
 typedef struct walk {
@@ -96,6 +98,39 @@ static bool excluded(const walk *W, uint32_t c, uint32_t v) {
     return false;
 }
 
+/* The ray runs back along trace T (from A in unit direction D, len long;
+** den = cross(D, ray)) towards T's end, and the face `beyond` T is coplanar
+** with the other chain's face: then the faces' common plane is entered from
+** the far side of their common region, and where M' turns off T onto the
+** wavefront vertex between them depends on where the two coplanar pieces
+** first touched, which this walk has not reached.  A fuzz finding: an
+** integer 12-gon with collinear edges 5 and 9 in different chains
+** (tests/data/fuzz/mismatch_monotone_integer_12gon.wpoly), where M' ran on
+** past T's end and gave a skeleton the validator accepts but that is not
+** the polygon's (CGAL's and naive's agree).  Not certified: *best records
+** where (best->uncertain), and the walk gives up if nothing comes first.
+** "Along" is parallel up to rounding or, for a finite trace, both ends
+** within eps_d of the ray's line: T's direction is a difference of points
+** relative to an origin 15000 away there, and its sine with an exactly
+** parallel ray came out 3.9e-14, above WK_MONO_RAY_PARALLEL_SIN. */
+static bool runs_back_into_coplanar(const walk *W, uint32_t c, const mono_trace *T,
+                                    uint32_t beyond, wk_point A, wk_point D, double len,
+                                    double den, hit *best) {
+    const mono *M = W->M;
+    const mono_chain *C = &M->ch[c];
+    wk_point Ap = sub(A, W->p);
+    if (!(fabs(cross(D, Ap)) <= M->eps_d) || !isfinite(len)) return false;
+    wk_point E = C->node[T->end].p;
+    bool along = fabs(den) <= WK_MONO_RAY_PARALLEL_SIN ||
+                 (fabs(cross(W->dir, Ap)) <= M->eps_d &&
+                  fabs(cross(W->dir, sub(E, W->p))) <= M->eps_d);
+    if (!along || !(-dot(D, Ap) > len + M->eps_d) || !coplanar(M, beyond, W->face[1 - c]))
+        return false;
+    double lend = dot(sub(E, W->p), W->dir);
+    if (lend > -M->eps_d && lend < best->uncertain) best->uncertain = lend < 0 ? 0 : lend;
+    return true;
+}
+
 /* Does the ray leave face e through trace v (outward: left walls have the
 ** face on their right, right walls on their left)?  Updates *best. */
 static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, uint32_t e,
@@ -146,6 +181,7 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
         }
         return;
     }
+    if (!T->flat && runs_back_into_coplanar(W, c, T, beyond, A, D, len, den, best)) return;
     if (fabs(den) <= WK_MONO_RAY_PARALLEL_SIN && fabs(cross(D, Ap)) <= M->eps_d) {
         /* The ray runs along this trace.  If the face beyond is coplanar with
         ** the other chain's face, M' really continues between those two
@@ -307,7 +343,7 @@ wk_status wk_mono_merge(mono *M) {
         W.dir = dir;
         W.face[0] = eb;
         W.face[1] = eu;
-        hit best = {INFINITY, 0, WK_NONE, WK_NONE, WK_NONE};
+        hit best = {INFINITY, 0, WK_NONE, WK_NONE, WK_NONE, INFINITY};
         walk_face(&W, 1, eu, &best);
         walk_face(&W, 0, eb, &best);
         if (eu == eu_end && eb == eb_end) {
@@ -320,6 +356,11 @@ wk_status wk_mono_merge(mono *M) {
                 return WK_OK;
             }
         }
+        if (isfinite(best.uncertain) && best.uncertain <= best.lambda + M->eps_d)
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "monotone: the merge chain between faces %u / %u runs back along a "
+                           "trace into a coplanar pair of faces (at %.17g, %.17g): not certified",
+                           eu, eb, W.p.x + M->o.x, W.p.y + M->o.y);
         if (best.chain == WK_NONE)
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: the merge chain leaves faces %u / %u nowhere (at %.17g, "
