@@ -610,6 +610,20 @@ static void regular_star(graph_buf *G, uint64_t *seed, uint32_t k) {
     }
 }
 
+/* The generated graph of case seed0 (its family is seed0 mod 6), isolated
+** vertices dropped; returns the family. */
+static int generated_graph(graph_buf *G, uint64_t seed0, uint64_t *seed) {
+    int family = (int)(seed0 % 6);
+    if (family == 0) random_segments(G, seed, 4 + (uint32_t)(seed0 % 20));
+    else if (family == 1) polygon_with_segments(G, seed, 2 + (uint32_t)(seed0 % 8));
+    else if (family == 2) grid_graph(G, seed, 3 + (uint32_t)(seed0 % 4), 3);
+    else if (family == 3) grid_graph(G, seed, 2 + (uint32_t)(seed0 % 5), 0);
+    else if (family == 4) regular_star(G, seed, 3 + (uint32_t)(seed0 % 9));
+    else integer_segments(G, seed, 3 + (uint32_t)(seed0 % 30));
+    drop_isolated(G);
+    return family;
+}
+
 Test(pslg, generated_graphs_pass_the_validator) {
     uint32_t cases = 0, events = 0;
     static graph_buf G;
@@ -618,14 +632,7 @@ Test(pslg, generated_graphs_pass_the_validator) {
     if (getenv("WSKEL_PSLG_CASES")) n_seeds = strtoull(getenv("WSKEL_PSLG_CASES"), NULL, 10);
     for (uint64_t seed0 = 1; seed0 <= n_seeds; seed0++) {
         uint64_t seed = seed0 * 0x9E3779B97F4A7C15ull;
-        int family = (int)(seed0 % 6);
-        if (family == 0) random_segments(&G, &seed, 4 + (uint32_t)(seed0 % 20));
-        else if (family == 1) polygon_with_segments(&G, &seed, 2 + (uint32_t)(seed0 % 8));
-        else if (family == 2) grid_graph(&G, &seed, 3 + (uint32_t)(seed0 % 4), 3);
-        else if (family == 3) grid_graph(&G, &seed, 2 + (uint32_t)(seed0 % 5), 0);
-        else if (family == 4) regular_star(&G, &seed, 3 + (uint32_t)(seed0 % 9));
-        else integer_segments(&G, &seed, 3 + (uint32_t)(seed0 % 30));
-        drop_isolated(&G);
+        int family = generated_graph(&G, seed0, &seed);
         if (G.ne == 0) continue;
         bool weighted = (seed0 / 3) % 2 == 1;
         for (uint32_t e = 0; e < G.ne; e++) G.w[e] = weighted ? 0.5 + 2 * rnd(&seed) : 1;
@@ -938,14 +945,7 @@ Test(pslg, motorcycle_variant_equals_the_reference) {
     if (getenv("WSKEL_PSLG_CASES")) n_seeds = strtoull(getenv("WSKEL_PSLG_CASES"), NULL, 10);
     for (uint64_t seed0 = 1; seed0 <= n_seeds; seed0++) {
         uint64_t seed = seed0 * 0x9E3779B97F4A7C15ull + 1;
-        int family = (int)(seed0 % 6);
-        if (family == 0) random_segments(&G, &seed, 4 + (uint32_t)(seed0 % 20));
-        else if (family == 1) polygon_with_segments(&G, &seed, 2 + (uint32_t)(seed0 % 8));
-        else if (family == 2) grid_graph(&G, &seed, 3 + (uint32_t)(seed0 % 4), 3);
-        else if (family == 3) grid_graph(&G, &seed, 2 + (uint32_t)(seed0 % 5), 0);
-        else if (family == 4) regular_star(&G, &seed, 3 + (uint32_t)(seed0 % 9));
-        else integer_segments(&G, &seed, 3 + (uint32_t)(seed0 % 30));
-        drop_isolated(&G);
+        int family = generated_graph(&G, seed0, &seed);
         if (G.ne == 0) continue;
         char what[64];
         snprintf(what, sizeof what, "seed %llu family %d", (unsigned long long)seed0, family);
