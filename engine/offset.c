@@ -30,6 +30,11 @@
 **   5. A hole ring belongs to the outer ring of least area that contains it
 **      (components can nest: an offset part inside another part's hole),
 **      decided by exact point-in-ring tests on a hole vertex.
+** A PSLG's offset is the region swept, {T < t} (wskel.h): a node at t
+** counts as not yet passed (above()), and each ring is reversed after
+** step 4 so that the swept region lies on its left; steps 5 and 6 then
+** nest the rings as for a polygon.  Stored edges are read through their
+** directions (wk_polygon_edge_dir), since a PSLG's caps have length 0.
 ** Tolerance: crossing points are interpolated in double from nodes that the
 ** skeleton placed within its own error (a few eps_d), so offset vertices
 ** carry that error and no more; every topological decision (which arc is

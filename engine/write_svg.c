@@ -27,6 +27,12 @@
 ** plane at height t instead (its sides' node times against t), which is the
 ** same cut for any face.  With negative weights the roof reaches outside the
 ** polygon, so the viewBox covers every node, not only the polygon.
+**
+** A PSLG (P->pslg) has no region to fill: its segments are drawn instead
+** (each once), its cap (the wavefront at the horizon) in green, and its
+** offsets are the rings of wk_offset at each time (the boundary of the
+** region swept by then; faces with islands included, which the line cut
+** above would need bridged cycles for).
 */
 #include "write.h"
 
