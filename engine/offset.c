@@ -130,22 +130,6 @@ static bool above(const wk_polygon *P, const wk_node *v, double t) {
     return P->pslg ? v->t >= t : v->t > t;
 }
 
-/* wk_faces_check_ids for a PSLG's skeleton, whose cap arcs (the wavefront
-** at the horizon) have WK_NONE on one side. */
-static wk_status check_pslg_ids(wk_run *R, const wk_polygon *P, const wk_skeleton *S) {
-    if (S->n_input != P->n || S->n_nodes < P->n)
-        return WK_FAIL(R, WK_EINVALID, P->name, 0, "offset: the skeleton is not of this graph");
-    for (uint32_t i = 0; i < S->n_arcs; i++) {
-        const wk_arc *c = &S->arcs[i];
-        bool faces_ok = (c->left < P->n || c->left == WK_NONE) &&
-                        (c->right < P->n || c->right == WK_NONE) && c->left != c->right;
-        if (c->a >= S->n_nodes || c->b >= S->n_nodes || c->a == c->b || !faces_ok)
-            return WK_FAIL(R, WK_EINVALID, P->name, 0, "offset: arc %u [%u, %u, %u, %u] is malformed",
-                           i, c->a, c->b, c->left, c->right);
-    }
-    return WK_OK;
-}
-
 wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double t,
                     wk_offset_set **out) {
     *out = NULL;
@@ -157,8 +141,7 @@ wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double
                        "offset time %g is beyond the horizon t = %.17g up to which the PSLG's "
                        "skeleton was computed (--until)",
                        t, S->horizon);
-    if ((P->pslg ? check_pslg_ids(R, P, S) : wk_faces_check_ids(R, P, S, "offset: ")) != WK_OK)
-        return R->err.code;
+    if (wk_faces_check_ids(R, P, S, "offset: ") != WK_OK) return R->err.code;
     const uint32_t A = S->n_arcs, n = P->n;
     uint32_t *xid = NULL, *fstart = NULL, *next = NULL, *order = NULL;
     wk_point *xp = NULL, *rp = NULL;

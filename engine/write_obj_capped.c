@@ -9,8 +9,8 @@
 ** islands, no node visited twice) and says so otherwise (WK_EUNSUPPORTED).
 ** A PSLG's skeleton is cut at its horizon T the same way (its cap is the
 ** wavefront at T); there a clockwise cap cycle is no face (see
-** pslg_cap_face), and a face with an island is refused rather than written
-** without its hole.
+** pslg_cap_face), and the edges' faces come from wk_faces_build, which
+** bridges a face's islands in (faces.h) as the uncapped roof does.
 */
 #include "write.h"
 
@@ -95,7 +95,10 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
     uint32_t *arcs = WK_NEW_ARRAY(R, uint32_t, A + 1);
     uint8_t *done = WK_NEW_ARRAY(R, uint8_t, A + 1);
     wk_status st = R->err.code;
+    wk_faces PF; /* a PSLG's edge faces, islands bridged */
+    memset(&PF, 0, sizeof PF);
     if (!arcs || !done) goto out;
+    if (P->pslg && (st = wk_faces_build(R, P, S, &PF, what)) != WK_OK) goto out;
 #define PUSH_NODE(v)                                                                   \
     do {                                                                               \
         if (WK_GROW(R, CF->node, CF->cap_node, CF->n_node + 1) != WK_OK) goto out;     \
@@ -112,15 +115,19 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
         for (uint32_t i = 0; i < A; i++)
             if (S->arcs[i].left == e || S->arcs[i].right == e) arcs[k++] = i;
         if (e != WK_NONE) {
+            if (P->pslg) { /* its cycle from faces.c, islands bridged in (a bridge may
+                              ** leave node e before the edge does) */
+                for (uint32_t q = PF.start[e]; q < PF.start[e + 1]; q++) PUSH_NODE(PF.node[q]);
+                END_FACE();
+                continue;
+            }
             /* from next(e) around to e: the input edge closes the face */
             uint32_t start = wk_polygon_next(P, e), cur = start, prev_arc = WK_NONE, guard = 0;
             PUSH_NODE(e);
             PUSH_NODE(start);
-            uint32_t walked = 0;
             while (cur != e) {
                 uint32_t used;
                 uint32_t nx = step(S, arcs, k, cur, &used, prev_arc);
-                walked++;
                 if (nx == WK_NONE || ++guard > k) {
                     st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
                                  "%sthe face of edge %u of this capped roof is not one simple "
@@ -131,15 +138,6 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
                 prev_arc = used;
                 cur = nx;
                 if (cur != e) PUSH_NODE(cur);
-            }
-            if (P->pslg && walked != k) {
-                /* arcs of the face off the walk: an island (a component
-                ** inside the face), which one OBJ polygon cannot hold */
-                st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
-                             "%sthe face of edge %u has an island (%u of its arcs are off its "
-                             "outer cycle): a face with a hole is not written yet",
-                             what, wk_polygon_input_edge(P, e), k - walked);
-                goto out;
             }
             END_FACE();
             continue;
@@ -173,6 +171,7 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
 #undef END_FACE
     st = WK_OK;
 out:
+    wk_faces_clear(R, &PF);
     if (arcs) WK_FREE_ARRAY(R, arcs, A + 1);
     if (done) WK_FREE_ARRAY(R, done, A + 1);
     if (st != WK_OK) wk_capped_faces_clear(R, CF);

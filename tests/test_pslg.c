@@ -670,8 +670,9 @@ static double check_pslg_offsets(wk_run *R, const wk_polygon *P, const wk_skelet
 
 /* The OBJ roof: one face per stored edge, each vertex on that edge's roof
 ** plane (z = d / w), then the cap's faces at z = T; the edge faces'
-** projections add up to the swept area at T.  A face with an island, or a
-** cap face with a hole, is refused (WK_EUNSUPPORTED); returns false then. */
+** projections add up to the swept area at T (a face's islands are bridged
+** in, their loops clockwise).  A cap face with a hole is refused
+** (WK_EUNSUPPORTED); returns false then. */
 static bool check_pslg_obj(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double swept,
                            const char *what) {
     FILE *f = tmpfile();
@@ -827,8 +828,8 @@ Test(pslg, generated_graphs_pass_the_validator) {
             release(&R, P, S);
         }
     }
-    cr_log_info("pslg sweep: %u cases validated, %u events, %u roofs (the others have a face "
-                "with an island or a cap face with a hole)",
+    cr_log_info("pslg sweep: %u cases validated, %u events, %u roofs (the others have a cap "
+                "face with a hole)",
                 cases, events, roofs);
     cr_assert_gt(roofs, cases / 2, "only %u of %u roofs written", roofs, cases);
     cr_assert_gt(cases, 40, "only %u cases ran", cases);
