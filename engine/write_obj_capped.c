@@ -101,26 +101,32 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
     if (P->pslg && (st = wk_faces_build(R, P, S, &PF, what)) != WK_OK) goto out;
 #define PUSH_NODE(v)                                                                   \
     do {                                                                               \
-        if (WK_GROW(R, CF->node, CF->cap_node, CF->n_node + 1) != WK_OK) goto out;     \
+        if (WK_GROW(R, CF->node, CF->cap_node, CF->n_node + 1) != WK_OK) {             \
+            st = R->err.code; /* WK_ENOMEM, never WK_OK */                             \
+            goto out;                                                                  \
+        }                                                                              \
         CF->node[CF->n_node++] = (v);                                                  \
     } while (0)
 #define END_FACE()                                                                       \
     do {                                                                                 \
-        if (WK_GROW(R, CF->end, CF->cap_end, CF->n_faces + 1) != WK_OK) goto out;        \
+        if (WK_GROW(R, CF->end, CF->cap_end, CF->n_faces + 1) != WK_OK) {                \
+            st = R->err.code;                                                            \
+            goto out;                                                                    \
+        }                                                                                \
         CF->end[CF->n_faces++] = CF->n_node;                                             \
     } while (0)
     /* faces fi = 0 .. n-1 are the edges' (input order), fi = n the cap */
     for (uint32_t fi = 0; fi <= P->n; fi++) {
         uint32_t e = fi < P->n ? edge_of[fi] : WK_NONE, k = 0;
+        if (P->pslg && e != WK_NONE) { /* its cycle from faces.c, islands bridged in (a
+                                       ** bridge may leave node e before the edge does) */
+            for (uint32_t q = PF.start[e]; q < PF.start[e + 1]; q++) PUSH_NODE(PF.node[q]);
+            END_FACE();
+            continue;
+        }
         for (uint32_t i = 0; i < A; i++)
             if (S->arcs[i].left == e || S->arcs[i].right == e) arcs[k++] = i;
         if (e != WK_NONE) {
-            if (P->pslg) { /* its cycle from faces.c, islands bridged in (a bridge may
-                              ** leave node e before the edge does) */
-                for (uint32_t q = PF.start[e]; q < PF.start[e + 1]; q++) PUSH_NODE(PF.node[q]);
-                END_FACE();
-                continue;
-            }
             /* from next(e) around to e: the input edge closes the face */
             uint32_t start = wk_polygon_next(P, e), cur = start, prev_arc = WK_NONE, guard = 0;
             PUSH_NODE(e);

@@ -20,6 +20,7 @@
 ** swept area growing), the OBJ roof (faces on their planes, their area the
 ** swept area at T), allocation failures in the writers.
 */
+#define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include <criterion/criterion.h>
 
 #include "helpers.h"
@@ -752,33 +753,61 @@ Test(pslg, ring_offsets_closed_form) {
     release(&R, P, S);
 }
 
-Test(pslg, writers_out_of_memory_at_every_allocation) {
+/* What writer w writes for the ring with a spoke cut at T = 3, with the
+** allocation after k more calls failing (k < 0: none); NULL on failure.
+** (0 obj, 1 vtp, 2 svg with offsets at 1 and 3, 3 the offsets at 2 as
+** GeoJSON.) */
+static char *write_spoked_ring(int w, int64_t k, wk_status *st) {
     double x[5] = {0, 10, 10, 0, 5}, y[5] = {0, 0, 10, 10, 5};
     uint32_t s[5] = {0, 1, 2, 3, 0}, d[5] = {1, 2, 3, 0, 4};
     const double times[2] = {1, 3};
-    for (int w = 0; w < 4; w++)
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P;
+    wk_skeleton *S;
+    expect_ok(&R, solve_pslg(&R, 5, x, y, 5, s, d, NULL, 3, &P, &S));
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    cr_assert_not_null(f);
+    wk_offset_set *O = NULL;
+    if (k >= 0) R.alloc.fail_after = (int64_t)R.alloc.calls + k;
+    *st = w == 0   ? wk_write_obj(&R, f, P, S)
+          : w == 1 ? wk_write_vtp(&R, f, P, S)
+          : w == 2 ? wk_write_svg(&R, f, P, S, times, 2)
+                   : wk_offset(&R, P, S, 2, &O);
+    if (*st == WK_OK && w == 3) *st = wk_write_offsets_geojson(&R, f, P, &O, 1);
+    R.alloc.fail_after = -1;
+    fclose(f);
+    wk_offset_set_free(&R, O);
+    release(&R, P, S);
+    if (*st != WK_OK) {
+        free(buf);
+        return NULL;
+    }
+    return buf;
+}
+
+Test(pslg, writers_out_of_memory_at_every_allocation) {
+    /* every failure is WK_ENOMEM with nothing left allocated, and the first
+    ** run that succeeds writes exactly what a run without faults writes (a
+    ** failure never passes as a shorter output) */
+    for (int w = 0; w < 4; w++) {
+        wk_status st;
+        char *want = write_spoked_ring(w, -1, &st);
+        cr_assert_eq(st, WK_OK, "writer %d", w);
         for (int64_t k = 0;; k++) {
-            wk_run R;
-            wk_run_init(&R);
-            wk_polygon *P;
-            wk_skeleton *S;
-            expect_ok(&R, solve_pslg(&R, 5, x, y, 5, s, d, NULL, 3, &P, &S));
-            FILE *f = tmpfile();
-            wk_offset_set *O = NULL;
-            R.alloc.fail_after = (int64_t)R.alloc.calls + k;
-            wk_status st = w == 0   ? wk_write_obj(&R, f, P, S)
-                           : w == 1 ? wk_write_vtp(&R, f, P, S)
-                           : w == 2 ? wk_write_svg(&R, f, P, S, times, 2)
-                                    : wk_offset(&R, P, S, 2, &O);
-            if (st == WK_OK && w == 3) st = wk_write_offsets_geojson(&R, f, P, &O, 1);
-            R.alloc.fail_after = -1;
-            fclose(f);
-            wk_offset_set_free(&R, O);
-            release(&R, P, S);
-            if (st == WK_OK) break;
+            char *got = write_spoked_ring(w, k, &st);
+            if (st == WK_OK) {
+                cr_assert_str_eq(got, want, "writer %d, allocation %lld", w, (long long)k);
+                free(got);
+                break;
+            }
             cr_assert_eq(st, WK_ENOMEM, "writer %d, allocation %lld", w, (long long)k);
             cr_assert_lt(k, 200);
         }
+        free(want);
+    }
 }
 
 Test(pslg, generated_graphs_pass_the_validator) {
