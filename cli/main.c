@@ -47,6 +47,9 @@ static const char usage_text[] =
     "                     with --format geojson or wkt, write the offset polygons\n"
     "                     (with holes) instead of the skeleton; with svg, draw them\n"
     "                     as curves over the skeleton.  --offsets is the same option\n"
+    "                     (PSLG: the region swept by then, around each component;\n"
+    "                     without --until, the skeleton is followed up to the\n"
+    "                     latest time if that is past the default horizon)\n"
     "  --part I           the polygon to use (0-based) when INPUT holds several\n"
     "                     (a MultiPolygon or several features / WKT polygons)\n"
     "  --check            validate the skeleton, exit 3 and no output if invalid\n"
@@ -319,16 +322,6 @@ int main(int argc, char **argv) {
     }
     if (until > 0 && !P->pslg)
         fprintf(stderr, "wskel: note: --until only affects PSLG input (a polygon's wavefront vanishes)\n");
-    if (P->pslg && (offsets_arg || !strcmp(format, "svg") || !strcmp(format, "obj") ||
-                    !strcmp(format, "vtp"))) {
-        /* these draw, cut or roof the polygon's region, which a PSLG does
-        ** not have */
-        WK_FAIL(&R, WK_EUNSUPPORTED, P->name, 0,
-                "a PSLG's skeleton is written as json, text, geojson or wkt only so far (not %s%s)",
-                offsets_arg ? "--offset" : "--format ", offsets_arg ? "" : format);
-        rc = report(&R, verbose);
-        goto done;
-    }
     for (uint32_t i = 0; i < P->n && !(height > 0); i++)
         if (!(P->w[i] > 0)) {
             WK_FAIL(&R, WK_EINPUT, P->name, 0,
@@ -354,6 +347,30 @@ int main(int argc, char **argv) {
               : wk_solve(&R, V, P, &S, &time_s, &peak) != WK_OK) {
         rc = report(&R, verbose);
         goto done;
+    }
+    double latest = 0; /* the latest offset time drawn or cut */
+    if (offset_polygons || !strcmp(format, "svg"))
+        for (uint32_t j = 0; j < n_offsets; j++) latest = offsets[j] > latest ? offsets[j] : latest;
+    if (P->pslg && latest > S->horizon && until > 0) {
+        WK_FAIL(&R, WK_EUNSUPPORTED, P->name, 0,
+                "offset time %g is beyond the horizon --until %g up to which the PSLG's skeleton "
+                "is computed: raise --until or leave it out",
+                latest, until);
+        rc = report(&R, verbose);
+        goto done;
+    }
+    if (P->pslg && latest > S->horizon) {
+        /* offsets past the default horizon: the skeleton up to the latest
+        ** offset time instead */
+        wk_skeleton_free(&R, S);
+        S = NULL;
+        R.opt.until = latest;
+        if (check ? wk_solve_checked(&R, V, P, check_tol * wk_polygon_scale(P), &S, &time_s, &peak,
+                                     &rep) != WK_OK
+                  : wk_solve(&R, V, P, &S, &time_s, &peak) != WK_OK) {
+            rc = report(&R, verbose);
+            goto done;
+        }
     }
     if (check && stats)
         fprintf(stderr, "check: ok (%u nodes, %u arcs, max distance error %.3g, area error %.3g)\n",

@@ -63,7 +63,9 @@ static wk_status check_arc(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
     if (c->a == c->b)
         return WK_FAIL(R, WK_EINVALID, P->name, 0, "%sarc %u [%u, %u, %u, %u] is a loop", what, i,
                        c->a, c->b, c->left, c->right);
-    if (c->left >= P->n || c->right >= P->n)
+    /* a PSLG's cap (the wavefront at its horizon) has no face on its left */
+    bool cap = P->pslg && c->left == WK_NONE;
+    if ((c->left >= P->n && !cap) || c->right >= P->n)
         return WK_FAIL(R, WK_EINVALID, P->name, 0,
                        "%sarc %u [%u, %u, %u, %u] names a face beyond the %u edges", what, i, c->a,
                        c->b, c->left, c->right, P->n);
@@ -354,13 +356,13 @@ wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, w
     /* Bucket the half-arcs by face: counts, prefix sums, fill (hs[e] then
     ** points one past bucket e), shift back. */
     for (uint32_t i = 0; i < A; i++) {
-        hs[S->arcs[i].left + 1]++;
+        if (S->arcs[i].left != WK_NONE) hs[S->arcs[i].left + 1]++; /* a PSLG's cap: one face */
         hs[S->arcs[i].right + 1]++;
     }
     for (uint32_t e = 0; e < n; e++) hs[e + 1] += hs[e];
     for (uint32_t i = 0; i < A; i++) {
         const wk_arc *c = &S->arcs[i];
-        h[hs[c->left]++] = make_half(S, i, c->left);
+        if (c->left != WK_NONE) h[hs[c->left]++] = make_half(S, i, c->left);
         h[hs[c->right]++] = make_half(S, i, c->right);
     }
     for (uint32_t e = n; e > 0; e--) hs[e] = hs[e - 1];

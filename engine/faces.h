@@ -37,7 +37,9 @@ typedef struct wk_faces {
 
 /* Check that S fits P (n_input == n <= n_nodes) and that every arc has node
 ** ids < S->n_nodes, a != b, face ids < P->n and left != right: what any code
-** indexing arrays by these ids needs.  what prefixes the message (e.g.
+** indexing arrays by these ids needs.  A PSLG's cap arcs (the wavefront at
+** its horizon) have WK_NONE on their left: accepted, and wk_faces_build
+** puts them on their right face's cycle only.  what prefixes the message (e.g.
 ** "validate (c): ").  Fails with WK_EINVALID naming the first bad arc. */
 wk_status wk_faces_check_ids(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                              const char *what);

@@ -30,6 +30,11 @@
 **   5. A hole ring belongs to the outer ring of least area that contains it
 **      (components can nest: an offset part inside another part's hole),
 **      decided by exact point-in-ring tests on a hole vertex.
+** A PSLG's offset is the region swept, {T < t} (wskel.h): a node at t
+** counts as not yet passed (above()), and each ring is reversed after
+** step 4 so that the swept region lies on its left; steps 5 and 6 then
+** nest the rings as for a polygon.  Stored edges are read through their
+** directions (wk_polygon_edge_dir), since a PSLG's caps have length 0.
 ** Tolerance: crossing points are interpolated in double from nodes that the
 ** skeleton placed within its own error (a few eps_d), so offset vertices
 ** carry that error and no more; every topological decision (which arc is
@@ -116,12 +121,26 @@ typedef struct ring_info {
     uint32_t slot;        /* position in the output */
 } ring_info;
 
+/* Has the wavefront not yet passed node v at time t?  A polygon's offset is
+** the region ahead of the wavefront, {T > t}: a node at exactly t is
+** passed (the limit from above).  A PSLG's is the region swept, {T < t}
+** within the horizon: a node at exactly t is not passed yet (the limit from
+** below), so t = 0 gives nothing and t = T the wavefront at T, its cap. */
+static bool above(const wk_polygon *P, const wk_node *v, double t) {
+    return P->pslg ? v->t >= t : v->t > t;
+}
+
 wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double t,
                     wk_offset_set **out) {
     *out = NULL;
     if (!(t >= 0) || !isfinite(t))
         return WK_FAIL(R, WK_EINPUT, P->name, 0, "offset time must be a finite number >= 0 (got %g)",
                        t);
+    if (P->pslg && t > S->horizon)
+        return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                       "offset time %g is beyond the horizon t = %.17g up to which the PSLG's "
+                       "skeleton was computed (--until)",
+                       t, S->horizon);
     if (wk_faces_check_ids(R, P, S, "offset: ") != WK_OK) return R->err.code;
     const uint32_t A = S->n_arcs, n = P->n;
     uint32_t *xid = NULL, *fstart = NULL, *next = NULL, *order = NULL;
@@ -137,7 +156,7 @@ wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double
     if (!(xid = WK_NEW_ARRAY(R, uint32_t, A ? A : 1))) goto fail;
     for (uint32_t i = 0; i < A; i++) {
         const wk_arc *c = &S->arcs[i];
-        bool a_up = S->nodes[c->a].t > t, b_up = S->nodes[c->b].t > t;
+        bool a_up = above(P, &S->nodes[c->a], t), b_up = above(P, &S->nodes[c->b], t);
         xid[i] = a_up != b_up ? m++ : WK_NONE;
     }
     if (!(xp = WK_NEW_ARRAY(R, wk_point, m ? m : 1)) || !(next = WK_NEW_ARRAY(R, uint32_t, m ? m : 1)) ||
@@ -153,8 +172,12 @@ wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double
             lo = hi;
             hi = s;
         }
-        double k = (t - lo->t) / (hi->t - lo->t); /* in [0, 1): lo->t <= t < hi->t */
+        double k = (t - lo->t) / (hi->t - lo->t); /* in [0, 1), a PSLG's (0, 1] */
         xp[xid[i]] = (wk_point){lo->x + k * (hi->x - lo->x), lo->y + k * (hi->y - lo->y)};
+        if (c->left == WK_NONE || c->right == WK_NONE) { /* defensive: a cap lies at T */
+            st = WK_FAIL(R, WK_EALGO, P->name, 0, "offset: cap arc %u crosses t = %g", i, t);
+            goto done;
+        }
         fstart[c->left + 2]++;
         fstart[c->right + 2]++;
         next[xid[i]] = WK_NONE;
@@ -165,12 +188,12 @@ wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double
     for (uint32_t i = 0; i < A; i++) {
         if (xid[i] == WK_NONE) continue;
         const wk_arc *c = &S->arcs[i];
-        uint32_t up = S->nodes[c->b].t > t; /* a -> b goes up */
+        uint32_t up = above(P, &S->nodes[c->b], t); /* a -> b goes up */
         uint32_t face[2] = {c->left, c->right};
         for (int s = 0; s < 2; s++) {
             uint32_t f = face[s];
-            wk_point p = P->p[f], q = P->p[wk_polygon_next(P, f)];
-            double dx = q.x - p.x, dy = q.y - p.y;
+            wk_point p = P->p[f], d = wk_polygon_edge_dir(P, f);
+            double dx = d.x, dy = d.y;
             double u = (xp[xid[i]].x - p.x) * dx + (xp[xid[i]].y - p.y) * dy; /* times |e| */
             refs[fstart[f + 1]++] = (crossing_ref){u, xid[i], s == 0 ? up : !up};
         }
@@ -181,8 +204,8 @@ wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double
     for (uint32_t f = 0; f < n; f++) {
         uint32_t k = fstart[f + 1] - fstart[f];
         if (!k) continue;
-        wk_point p = P->p[f], q = P->p[wk_polygon_next(P, f)];
-        double len = hypot(q.x - p.x, q.y - p.y);
+        wk_point d = wk_polygon_edge_dir(P, f);
+        double len = hypot(d.x, d.y);
         qsort(refs + fstart[f], k, sizeof *refs, ref_cmp);
         if ((st = pair_face(R, P, f, refs + fstart[f], k, WK_OFFSET_TIE_REL * scale * len,
                             next)) != WK_OK)
@@ -207,6 +230,12 @@ wk_status wk_offset(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double
         }
         while (nv - start > 1 && rp[nv - 1].x == rp[start].x && rp[nv - 1].y == rp[start].y) nv--;
         uint32_t len = nv - start;
+        if (P->pslg) /* the swept region on the left, not the region ahead */
+            for (uint32_t a = start, b = nv - 1; a < b; a++, b--) {
+                wk_point tmp = rp[a];
+                rp[a] = rp[b];
+                rp[b] = tmp;
+            }
         double area = len >= 3 ? 0.5 * wk_shoelace_exact(rp + start, len) : 0;
         if (area == 0) {
             nv = start;

@@ -7,6 +7,10 @@
 ** above.  A face is walked from its edge (e, next(e)) along its arcs; this
 ** path handles faces whose every node has two of the face's arcs (no
 ** islands, no node visited twice) and says so otherwise (WK_EUNSUPPORTED).
+** A PSLG's skeleton is cut at its horizon T the same way (its cap is the
+** wavefront at T); there a clockwise cap cycle is no face (see
+** pslg_cap_face), and the edges' faces come from wk_faces_build, which
+** bridges a face's islands in (faces.h) as the uncapped roof does.
 */
 #include "write.h"
 
@@ -31,6 +35,59 @@ static uint32_t step(const wk_skeleton *S, const uint32_t *arcs, uint32_t k, uin
     return c->a == cur ? c->b : c->a;
 }
 
+/* A PSLG's cap (the wavefront at its horizon T) bounds the unswept region:
+** a counter-clockwise cycle is the wavefront of a bounded face still alive
+** at T, closed by its cap face at z = T; a clockwise one runs around a
+** component with the unswept region outside it: the unbounded outer face,
+** which no face can close (it is the rim of the roof), or a hole in another
+** cycle's cap face.  So the last cycle is dropped when clockwise, its
+** nodes kept aside (after the faces' nodes) for pslg_cap_holes. */
+static wk_status pslg_cap_face(wk_run *R, const wk_skeleton *S, wk_capped_faces *CF) {
+    uint32_t f = CF->n_faces - 1, from = f ? CF->end[f - 1] : 0, len = CF->end[f] - from;
+    if (wk_cycle_area(S, CF->node + from, len) > 0) return WK_OK;
+    CF->n_faces--;
+    if (WK_GROW(R, CF->holes, CF->cap_holes, CF->n_holes + len + 1) != WK_OK) return R->err.code;
+    memcpy(CF->holes + CF->n_holes, CF->node + from, (size_t)len * sizeof *CF->node);
+    CF->n_holes += len;
+    CF->holes[CF->n_holes++] = WK_NONE; /* cycle separator */
+    CF->n_node = from;
+    return WK_OK;
+}
+
+/* Is (x, y) inside the node cycle c[0 .. len) (even-odd, doubles: cap
+** cycles are disjoint wavefront components, so any vertex decides)? */
+static bool inside_cycle(const wk_skeleton *S, const uint32_t *c, uint32_t len, double x, double y) {
+    bool in = false;
+    for (uint32_t i = 0, j = len - 1; i < len; j = i++) {
+        const wk_node *a = &S->nodes[c[j]], *b = &S->nodes[c[i]];
+        if ((a->y > y) != (b->y > y) && x < a->x + (y - a->y) * (b->x - a->x) / (b->y - a->y))
+            in = !in;
+    }
+    return in;
+}
+
+/* A clockwise cap cycle inside a cap face is a hole of that face (a
+** component inside a bounded face whose wavefront is alive at T): one OBJ
+** polygon cannot hold it, so the roof is refused rather than written with
+** the face covering the component. */
+static wk_status pslg_cap_holes(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                wk_capped_faces *CF, const char *what) {
+    for (uint32_t h = 0; h < CF->n_holes; h++) {
+        const wk_node *v = &S->nodes[CF->holes[h]];
+        for (uint32_t f = CF->n_edge_faces; f < CF->n_faces; f++) {
+            uint32_t from = f ? CF->end[f - 1] : 0;
+            if (inside_cycle(S, CF->node + from, CF->end[f] - from, v->x, v->y))
+                return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                               "%sthe wavefront at the horizon t = %g encloses a component "
+                               "still apart from it (the cap face would have a hole, not written "
+                               "yet): use a larger --until",
+                               what, S->horizon);
+        }
+        while (CF->holes[h] != WK_NONE) h++;
+    }
+    return WK_OK;
+}
+
 wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                                 const uint32_t *edge_of, wk_capped_faces *CF, const char *what) {
     memset(CF, 0, sizeof *CF);
@@ -38,20 +95,35 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
     uint32_t *arcs = WK_NEW_ARRAY(R, uint32_t, A + 1);
     uint8_t *done = WK_NEW_ARRAY(R, uint8_t, A + 1);
     wk_status st = R->err.code;
+    wk_faces PF; /* a PSLG's edge faces, islands bridged */
+    memset(&PF, 0, sizeof PF);
     if (!arcs || !done) goto out;
+    if (P->pslg && (st = wk_faces_build(R, P, S, &PF, what)) != WK_OK) goto out;
 #define PUSH_NODE(v)                                                                   \
     do {                                                                               \
-        if (WK_GROW(R, CF->node, CF->cap_node, CF->n_node + 1) != WK_OK) goto out;     \
+        if (WK_GROW(R, CF->node, CF->cap_node, CF->n_node + 1) != WK_OK) {             \
+            st = R->err.code; /* WK_ENOMEM, never WK_OK */                             \
+            goto out;                                                                  \
+        }                                                                              \
         CF->node[CF->n_node++] = (v);                                                  \
     } while (0)
 #define END_FACE()                                                                       \
     do {                                                                                 \
-        if (WK_GROW(R, CF->end, CF->cap_end, CF->n_faces + 1) != WK_OK) goto out;        \
+        if (WK_GROW(R, CF->end, CF->cap_end, CF->n_faces + 1) != WK_OK) {                \
+            st = R->err.code;                                                            \
+            goto out;                                                                    \
+        }                                                                                \
         CF->end[CF->n_faces++] = CF->n_node;                                             \
     } while (0)
     /* faces fi = 0 .. n-1 are the edges' (input order), fi = n the cap */
     for (uint32_t fi = 0; fi <= P->n; fi++) {
         uint32_t e = fi < P->n ? edge_of[fi] : WK_NONE, k = 0;
+        if (P->pslg && e != WK_NONE) { /* its cycle from faces.c, islands bridged in (a
+                                       ** bridge may leave node e before the edge does) */
+            for (uint32_t q = PF.start[e]; q < PF.start[e + 1]; q++) PUSH_NODE(PF.node[q]);
+            END_FACE();
+            continue;
+        }
         for (uint32_t i = 0; i < A; i++)
             if (S->arcs[i].left == e || S->arcs[i].right == e) arcs[k++] = i;
         if (e != WK_NONE) {
@@ -97,12 +169,15 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
                 j = nj;
             }
             END_FACE();
+            if (P->pslg && (st = pslg_cap_face(R, S, CF)) != WK_OK) goto out;
         }
     }
+    if (P->pslg && (st = pslg_cap_holes(R, P, S, CF, what)) != WK_OK) goto out;
 #undef PUSH_NODE
 #undef END_FACE
     st = WK_OK;
 out:
+    wk_faces_clear(R, &PF);
     if (arcs) WK_FREE_ARRAY(R, arcs, A + 1);
     if (done) WK_FREE_ARRAY(R, done, A + 1);
     if (st != WK_OK) wk_capped_faces_clear(R, CF);
@@ -112,6 +187,7 @@ out:
 void wk_capped_faces_clear(wk_run *R, wk_capped_faces *CF) {
     WK_FREE_ARRAY(R, CF->node, CF->cap_node);
     WK_FREE_ARRAY(R, CF->end, CF->cap_end);
+    WK_FREE_ARRAY(R, CF->holes, CF->cap_holes);
     memset(CF, 0, sizeof *CF);
 }
 

@@ -27,6 +27,12 @@
 ** plane at height t instead (its sides' node times against t), which is the
 ** same cut for any face.  With negative weights the roof reaches outside the
 ** polygon, so the viewBox covers every node, not only the polygon.
+**
+** A PSLG (P->pslg) has no region to fill: its segments are drawn instead
+** (each once), its cap (the wavefront at the horizon) in green, and its
+** offsets are the rings of wk_offset at each time (the boundary of the
+** region swept by then; faces with islands included, which the line cut
+** above would need bridged cycles for).
 */
 #include "write.h"
 
@@ -55,8 +61,8 @@ static void put_xml_text(FILE *f, const char *s) {
 /* Segments of face e's wavefront at time t, as path commands. */
 static void put_offset(FILE *f, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
                        const uint32_t *cyc, uint32_t len, double t, cut *cuts) {
-    wk_point p = P->p[e], q = P->p[wk_polygon_next(P, e)];
-    double dx = q.x - p.x, dy = q.y - p.y, l = hypot(dx, dy);
+    wk_point p = P->p[e], d = wk_polygon_edge_dir(P, e); /* a PSLG's cap: length 0, a direction */
+    double dx = d.x, dy = d.y, l = hypot(dx, dy);
     if (!(l > 0)) return;
     dx /= l;
     dy /= l;
@@ -101,6 +107,28 @@ static void put_offsets(FILE *f, const wk_polygon *P, const wk_skeleton *S, cons
     }
 }
 
+/* A PSLG's offsets: the rings of wk_offset at each time (the boundary of
+** the region swept by then), closed subpaths; at the horizon they run
+** along the cap. */
+static void put_offset_rings(FILE *f, wk_offset_set *const *sets, const double *offsets,
+                             uint32_t n_offsets, double sw) {
+    for (uint32_t k = 0; k < n_offsets; k++) {
+        if (!sets[k]) continue; /* t = 0: the segments themselves */
+        const wk_offset_set *O = sets[k];
+        fprintf(f, "<path class=\"offset\" data-t=\"%.10g\" fill=\"none\" stroke=\"#8a8a8a\" "
+                   "stroke-width=\"%.4g\" d=\"",
+                offsets[k], sw * 0.5);
+        for (uint32_t r = 0; r < O->n_rings; r++) {
+            for (uint32_t i = O->ring_start[r]; i < O->ring_start[r + 1]; i++) {
+                fputs(i == O->ring_start[r] ? "M" : "L", f);
+                put_xy(f, O->p[i].x, O->p[i].y);
+            }
+            fputs("Z", f);
+        }
+        fputs("\"/>\n", f);
+    }
+}
+
 static bool is_cap_arc(const wk_arc *c) { return c->left == WK_NONE || c->right == WK_NONE; }
 
 /* kind: 0 convex, 1 reflex, 2 the cap */
@@ -121,6 +149,40 @@ static void put_arcs(FILE *f, const wk_polygon *P, const wk_skeleton *S, int kin
     fputs("\"/>\n", f);
 }
 
+/* The polygon, filled: one path, a subpath per ring; evenodd leaves the
+** holes unfilled. */
+static void put_polygon(FILE *f, const wk_polygon *P, double sw) {
+    fprintf(f, "<path class=\"polygon\" fill=\"#f4f1e4\" fill-rule=\"evenodd\" "
+               "stroke=\"#333333\" stroke-width=\"%.4g\" d=\"",
+            sw);
+    for (uint32_t k = 0; k < P->n_rings; k++) {
+        for (uint32_t i = P->ring_start[k]; i < P->ring_start[k + 1]; i++) {
+            fputs(i == P->ring_start[k] ? (k ? " M" : "M") : " L", f);
+            put_xy(f, P->p[i].x, P->p[i].y);
+        }
+        fputs(" Z", f);
+    }
+    fputs("\"/>\n", f);
+}
+
+/* A PSLG has no region to fill: its segments, each once.  The two
+** half-edges of a segment run between its two nodes in opposite
+** directions; the one leaving the node of lower GraphML index is drawn. */
+static void put_segments(FILE *f, const wk_polygon *P, double sw) {
+    fprintf(f, "<path class=\"segments\" fill=\"none\" stroke=\"#333333\" stroke-width=\"%.4g\" d=\"",
+            2 * sw);
+    for (uint32_t e = 0; e < P->n; e++) {
+        if (P->edge_of[e] == WK_NONE) continue; /* a cap */
+        if (P->corner_vertex[e] > P->corner_vertex[wk_polygon_next(P, e)]) continue;
+        fputs(" M", f);
+        put_xy(f, P->p[e].x, P->p[e].y);
+        fputs(" L", f);
+        wk_point q = P->p[wk_polygon_next(P, e)];
+        put_xy(f, q.x, q.y);
+    }
+    fputs("\"/>\n", f);
+}
+
 wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleton *S,
                        const double *offsets, uint32_t n_offsets) {
     if (!offsets) n_offsets = 0;
@@ -134,12 +196,23 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
     svg_faces SF = {0, NULL, NULL, NULL};
     cut *cuts = NULL;
     uint32_t maxlen = 0;
+    wk_offset_set **pslg_sets = NULL;
     wk_status st = capped ? wk_write_begin_capped(R, P, S, "write svg: ")
                           : wk_write_begin(R, P, S, "write svg: ");
     if (st != WK_OK) return st;
     if (n_offsets && !capped) {
         if (wk_faces_build(R, P, S, &F, "write svg (offset curves): ") != WK_OK) return R->err.code;
         SF = (svg_faces){F.n, F.start, F.node, NULL};
+    } else if (n_offsets && P->pslg) {
+        /* the swept region's rings from wk_offset (faces with islands
+        ** included), computed before anything is written */
+        if (!(pslg_sets = WK_NEW_ARRAY(R, wk_offset_set *, n_offsets))) {
+            st = R->err.code;
+            goto out;
+        }
+        for (uint32_t k = 0; k < n_offsets; k++)
+            if (offsets[k] > 0 && (st = wk_offset(R, P, S, offsets[k], &pslg_sets[k])) != WK_OK)
+                goto out;
     } else if (n_offsets) {
         /* the edges' faces of the capped roof, as start offsets */
         if (wk_input_order(R, P, NULL, &edge_of) != WK_OK ||
@@ -154,7 +227,7 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
     }
     for (uint32_t e = 0; e < SF.n; e++)
         if (SF.start[e + 1] - SF.start[e] > maxlen) maxlen = SF.start[e + 1] - SF.start[e];
-    if (n_offsets && !(cuts = WK_NEW_ARRAY(R, cut, maxlen))) {
+    if (n_offsets && !pslg_sets && !(cuts = WK_NEW_ARRAY(R, cut, maxlen))) {
         st = R->err.code;
         goto out;
     }
@@ -177,19 +250,10 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
     fprintf(f, ": weighted straight skeleton, %u nodes, %u arcs (blue convex, orange reflex%s)"
                "</title>\n<g stroke-linecap=\"round\" stroke-linejoin=\"round\">\n",
             S->n_nodes, S->n_arcs, capped ? ", green the cap" : "");
-    /* one path, a subpath per ring; evenodd leaves the holes unfilled */
-    fprintf(f, "<path class=\"polygon\" fill=\"#f4f1e4\" fill-rule=\"evenodd\" "
-               "stroke=\"#333333\" stroke-width=\"%.4g\" d=\"",
-            sw);
-    for (uint32_t k = 0; k < P->n_rings; k++) {
-        for (uint32_t i = P->ring_start[k]; i < P->ring_start[k + 1]; i++) {
-            fputs(i == P->ring_start[k] ? (k ? " M" : "M") : " L", f);
-            put_xy(f, P->p[i].x, P->p[i].y);
-        }
-        fputs(" Z", f);
-    }
-    fputs("\"/>\n", f);
-    if (n_offsets) put_offsets(f, P, S, &SF, offsets, n_offsets, sw, cuts);
+    if (P->pslg) put_segments(f, P, sw);
+    else put_polygon(f, P, sw);
+    if (pslg_sets) put_offset_rings(f, pslg_sets, offsets, n_offsets, sw);
+    else if (n_offsets) put_offsets(f, P, S, &SF, offsets, n_offsets, sw, cuts);
     put_arcs(f, P, S, 0, "#1f5fbf", sw);
     put_arcs(f, P, S, 1, "#e07b00", sw);
     if (capped) put_arcs(f, P, S, 2, "#2e9e44", sw);
@@ -200,6 +264,10 @@ wk_status wk_write_svg(wk_run *R, FILE *f, const wk_polygon *P, const wk_skeleto
     fputs("</g>\n</g>\n</svg>\n", f);
     st = wk_write_end(R, f, "svg");
 out:
+    if (pslg_sets) {
+        for (uint32_t k = 0; k < n_offsets; k++) wk_offset_set_free(R, pslg_sets[k]);
+        WK_FREE_ARRAY(R, pslg_sets, n_offsets);
+    }
     if (cuts) WK_FREE_ARRAY(R, cuts, maxlen);
     if (cf_start) WK_FREE_ARRAY(R, cf_start, CF.n_edge_faces + 1);
     if (edge_of) WK_FREE_ARRAY(R, edge_of, P->n);

@@ -15,7 +15,9 @@
 ** faces, -1 for arcs (an arc has two); "kind" (Int32): 0 boundary, 1 convex
 ** arc, 2 reflex arc (see wk_arc_is_reflex), 3 roof face, 4 the cap (an arc
 ** or a face of the cap of a roof cut at a height, --height: then the cells
-** after the n roof faces are the cap's faces, edge_id -1).
+** after the n roof faces are the cap's faces, edge_id -1; a PSLG's skeleton
+** is cut at its horizon the same way, boundary lines and roof faces then
+** per stored half-edge or cap, see wk_capped_faces_build).
 ** Connectivity and offsets are Int64, the VTK 9 default.
 */
 #include "write.h"

@@ -728,7 +728,13 @@ wk_status wk_face_cycle(wk_run *R, const wk_polygon *P, const wk_skeleton *S, ui
 ** points are merged and rings left with fewer than 3 points or zero area
 ** dropped.  t = 0 gives P itself: P's region, its vertices exactly P's (a
 ** vertex between collinear edges is left out when the collinear rule
-** removed one of the edges at t = 0: its face is empty).  Deterministic. */
+** removed one of the edges at t = 0: its face is empty).  Deterministic.
+** A PSLG (P->pslg) has no region: its offset at t is the region the
+** wavefront has swept by t, {x : T(x) < t} (a buffer of the graph), one
+** polygon around each connected component, holes where a bounded face's
+** wavefront is still alive; the limit from below (t = 0 gives no polygon,
+** t = S->horizon the wavefront at the horizon, its cap); t past the
+** horizon is WK_EUNSUPPORTED (the skeleton is not known there). */
 typedef struct wk_offset_set {
     double t;
     uint32_t n_polygons;     /* connected components of the wavefront at t */

@@ -14,7 +14,9 @@
 #   (g) determinism: two runs give identical nodes and arcs (and text output)
 #   (h) bin/wskel-gen: every family at n = 50 passes --check; exit codes 1, 64
 #   (i) PSLG GraphML (tests/data/pslg): --check, --until, the segment's cap,
-#       other variants refuse (exit 2), --pslg
+#       other variants refuse (exit 2), --pslg; svg, obj, vtp and --offset
+#       (past the default horizon; past --until: refused), the refused roof
+#       (a cap face with a hole)
 #
 # Exits non-zero if any check failed; prints "cli tests: N passed, M failed".
 # Environment: WSKEL_BIN and WSKEL_GEN override bin/wskel and bin/wskel-gen;
@@ -437,13 +439,68 @@ for v in arrangement monotone deforming; do
   expect "pslg: --variant $v refuses (exit 2)" 2 "does not take PSLG input"
   [ ! -e "$TMP/refused.json" ] && pass "pslg: --variant $v leaves no file" || fail "pslg: --variant $v leaves no file" ""
 done
-for fmt in svg obj vtp; do
-  run "$WSKEL" --format "$fmt" -o "$TMP/pslg.$fmt" "$PSLG/plus.graphml"
-  expect "pslg: --format $fmt refused (exit 2)" 2 "json, text, geojson or wkt only"
-  [ ! -e "$TMP/pslg.$fmt" ] && pass "pslg: --format $fmt leaves no file" || fail "pslg: --format $fmt leaves no file" ""
+# the picture, the roof and the offsets (tests/test_outputs.py checks their
+# geometry): every file gives them (weighted_island's roof has a face with
+# an island, bridged in)
+for f in "$PSLG"/*.graphml; do
+  b=$(basename "$f")
+  for fmt in svg obj vtp; do
+    rm -f "$TMP/pslg.$fmt"
+    run "$WSKEL" --format "$fmt" --offset 0.5,1 -o "$TMP/pslg.$fmt" "$f"
+    expect "pslg $b: --format $fmt exits 0" 0
+    [ -s "$TMP/pslg.$fmt" ] && pass "pslg $b: $fmt written" || fail "pslg $b: $fmt written" ""
+  done
+  for fmt in geojson wkt; do
+    run "$WSKEL" --format "$fmt" --offset 0.5,1 "$f"
+    expect "pslg $b: --offset with $fmt exits 0" 0
+  done
 done
-run "$WSKEL" --offset 0.5 --format geojson "$PSLG/plus.graphml"
-expect "pslg: --offset refused (exit 2)" 2 "json, text, geojson or wkt only"
+if "$PY" -c 'import sys, xml.etree.ElementTree as E; r = E.parse(sys.argv[1]).getroot(); sys.exit(not r.tag.endswith("svg"))' "$TMP/pslg.svg" 2>/dev/null
+then pass "pslg: svg is well-formed XML"; else fail "pslg: svg is well-formed XML" "$(head -c 300 "$TMP/pslg.svg")"; fi
+# offsets past the default horizon (0.5 for the segment (0,0)-(2,0)): the
+# skeleton is followed up to the latest offset time, t = 3 the rectangle
+# [-3, 5] x [-3, 3] of area 48; t = 0.25 [-0.25, 2.25] x [-0.25, 0.25], 1.25
+run "$WSKEL" --format geojson --offset 0.25,3 "$PSLG/segment.graphml"
+expect "pslg segment: --offset 3 past the default horizon exits 0" 0
+a=$("$PY" -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+def area(r): return 0.5 * sum(r[i-1][0] * r[i][1] - r[i][0] * r[i-1][1] for i in range(1, len(r)))
+print(" ".join("%g" % sum(area(r) for p in f["geometry"]["coordinates"] for r in p) for f in d["features"]))' "$OUT" 2>/dev/null)
+[ "$a" = "1.25 48" ] && pass "pslg segment: offset areas at 0.25 and 3" || fail "pslg segment: offset areas at 0.25 and 3" "got '$a'"
+# an offset past a given --until is refused, naming it, and leaves no file
+run "$WSKEL" --format wkt --until 1 --offset 0.5,3 -o "$TMP/late.wkt" "$PSLG/segment.graphml"
+expect "pslg: --offset past --until refused (exit 2)" 2 "beyond the horizon --until 1"
+[ ! -e "$TMP/late.wkt" ] && pass "pslg: refused --offset leaves no file" || fail "pslg: refused --offset leaves no file" ""
+run "$WSKEL" --format svg --until 1 --offset 3 "$PSLG/segment.graphml"
+expect "pslg: svg --offset past --until refused (exit 2)" 2 "beyond the horizon --until 1"
+# a segment inside a square, cut at t = 1 before the square's inner
+# wavefront meets the segment's: the cap face inside the square would have
+# a hole (the segment's wavefront), which an OBJ polygon cannot hold
+cat >"$TMP/ring_segment.graphml" <<'XML'
+<?xml version="1.0" encoding="UTF-8"?>
+<graphml xmlns="http://graphml.graphdrawing.org/xmlns">
+<key id="x" for="node" attr.name="vertex-coordinate-x" attr.type="double"/>
+<key id="y" for="node" attr.name="vertex-coordinate-y" attr.type="double"/>
+<graph id="G" edgedefault="undirected">
+<node id="a"><data key="x">0</data><data key="y">0</data></node>
+<node id="b"><data key="x">10</data><data key="y">0</data></node>
+<node id="c"><data key="x">10</data><data key="y">10</data></node>
+<node id="d"><data key="x">0</data><data key="y">10</data></node>
+<node id="p"><data key="x">4</data><data key="y">5</data></node>
+<node id="q"><data key="x">6</data><data key="y">5</data></node>
+<edge source="a" target="b"/><edge source="b" target="c"/><edge source="c" target="d"/>
+<edge source="d" target="a"/><edge source="p" target="q"/>
+</graph>
+</graphml>
+XML
+for fmt in obj vtp; do
+  run "$WSKEL" --until 1 --format "$fmt" -o "$TMP/holed.$fmt" "$TMP/ring_segment.graphml"
+  expect "pslg: $fmt of a cap face with a hole refused (exit 2)" 2 "encloses a component"
+  [ ! -e "$TMP/holed.$fmt" ] && pass "pslg: refused $fmt leaves no file" || fail "pslg: refused $fmt leaves no file" ""
+done
+run "$WSKEL" --until 3 --format obj "$TMP/ring_segment.graphml"
+expect "pslg: the same after the components met exits 0" 0
 for fmt in text wkt geojson; do
   run "$WSKEL" --format "$fmt" "$PSLG/plus.graphml"
   expect "pslg: --format $fmt exits 0" 0

@@ -377,5 +377,256 @@ class Counters(unittest.TestCase):
         self.assertEqual(tl.list_counters(), self.listed["naive"])
 
 
+# ------------------------------------------------------------------ PSLGs
+
+PSLG = os.path.join(tl.DATA, "pslg")
+
+
+def graphml_weights(path):
+    """The weight of each GraphML edge (document order; 1 without one)."""
+    root = ET.parse(path).getroot()
+    keys = {k.get("id"): k.get("attr.name") for k in root.iter() if k.tag.endswith("key")}
+    out = []
+    for e in root.iter():
+        if e.tag.endswith("edge"):
+            w = 1.0
+            for d in e:
+                if d.tag.endswith("data") and keys.get(d.get("key")) == "edge-weight":
+                    w = float(d.text)
+            out.append(w)
+    return out
+
+
+class PslgGeometry:
+    """The stored edges of a PSLG's skeleton (its JSON): edge i runs from
+    corner i to the next corner of its ring; a cap (edge_of -1) is the
+    incoming half-edge's direction turned clockwise, with its weight."""
+
+    def __init__(self, doc, weights):
+        self.doc = doc
+        self.n = doc["n"]
+        nodes, edge_of = doc["nodes"], doc["pslg"]["edge_of"]
+        self.T = doc["pslg"]["horizon"]
+        self.nxt, self.prv = [0] * self.n, [0] * self.n
+        s = 0
+        for size in doc["rings"]:
+            for i in range(s, s + size):
+                self.nxt[i] = s + (i - s + 1) % size
+                self.prv[i] = s + (i - s - 1) % size
+            s += size
+        self.dirs, self.w = [], []
+        for i in range(self.n):
+            if edge_of[i] >= 0:
+                a, b = nodes[i], nodes[self.nxt[i]]
+                self.dirs.append((b[0] - a[0], b[1] - a[1]))
+                self.w.append(weights[edge_of[i]])
+            else:
+                p = self.prv[i]
+                a, b = nodes[p], nodes[i]
+                self.dirs.append((b[1] - a[1], -(b[0] - a[0])))
+                self.w.append(weights[edge_of[p]])
+        xs = [v[0] for v in nodes[:self.n]]
+        ys = [v[1] for v in nodes[:self.n]]
+        self.scale = math.hypot(max(xs) - min(xs), max(ys) - min(ys)) or 1.0
+
+    def left_distance(self, e, x, y):
+        """Signed distance of (x, y) from stored edge e's line, > 0 on its face's side."""
+        ax, ay = self.doc["nodes"][e][:2]
+        dx, dy = self.dirs[e]
+        return (dx * (y - ay) - dy * (x - ax)) / math.hypot(dx, dy)
+
+
+def ring_area(pts):
+    return 0.5 * sum(pts[i - 1][0] * pts[i][1] - pts[i][0] * pts[i - 1][1]
+                     for i in range(len(pts)))
+
+
+class PslgOutputs(unittest.TestCase):
+    """obj, vtp, svg and --offset (svg, geojson, wkt) of every
+    tests/data/pslg file, at the default horizon and at --until 0.3
+    diagonals (where bounded faces still have a wavefront, so their cap
+    faces are written)."""
+
+    TIMES = [0.02, 0.1, 0.25]  # offset times, in diagonals over the largest weight
+
+    @classmethod
+    def setUpClass(cls):
+        tl.need(tl.WSKEL)
+        cls.tmp = tempfile.TemporaryDirectory(prefix="wskel-pslg-outputs-")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def files(self):
+        out = sorted(f for f in os.listdir(PSLG) if f.endswith(".graphml"))
+        self.assertGreater(len(out), 3, "too few PSLG test files")
+        return out
+
+    def run_wskel(self, args):
+        out = os.path.join(self.tmp.name, "out")
+        if os.path.exists(out):
+            os.remove(out)
+        rc, _, err = tl.wskel(["-o", out] + args)
+        self.assertEqual(rc, 0, "wskel %s: exit %s: %s" % (" ".join(args), rc, err))
+        with open(out) as f:
+            return f.read()
+
+    def test_all(self):
+        for f in self.files():
+            path = os.path.join(PSLG, f)
+            weights = graphml_weights(path)
+            doc = json.loads(self.run_wskel(["--check", path]))
+            G = PslgGeometry(doc, weights)
+            for until in (None, 0.3 * G.scale / max(weights)):
+                extra = ["--until", repr(until)] if until else []
+                with self.subTest(input=f, until=until):
+                    d = json.loads(self.run_wskel(["--check"] + extra + [path])) if until else doc
+                    G = PslgGeometry(d, weights)
+                    faces = self.roof(G, extra + [path])
+                    times = [k * G.scale / max(weights) for k in self.TIMES]
+                    times = [t for t in times if t <= G.T] + [G.T]
+                    arg = ",".join(repr(t) for t in times)
+                    rings = self.check_svg(G, self.run_wskel(["--format", "svg", "--offset", arg] +
+                                                             extra + [path]), times)
+                    gj = json.loads(self.run_wskel(["--format", "geojson", "--offset", arg] + extra +
+                                                   [path]))
+                    wkt = self.run_wskel(["--format", "wkt", "--offset", arg] + extra + [path])
+                    self.check_offsets(G, gj, wkt, times, faces)
+                    self.assertEqual(rings, [sum(len(p) for p in f["geometry"]["coordinates"])
+                                             for f in gj["features"]], "svg and geojson rings")
+        self.assertGreater(self.roofs, 3, "too few PSLG roofs written")
+
+    roofs = 0
+
+    def roof(self, G, args):
+        """The OBJ faces, checked, and the VTP's against them (a face with an
+        island has it bridged in: weighted_island.graphml, a slow segment
+        inside a fast one's face)."""
+        out = os.path.join(self.tmp.name, "roof.obj")
+        rc, _, err = tl.wskel(["--format", "obj", "-o", out] + args)
+        self.assertEqual(rc, 0, err)
+        with open(out) as f:
+            faces = self.check_obj(G, f.read())
+        os.remove(out)
+        self.check_vtp(G, faces, args)
+        self.roofs += 1
+        return faces
+
+    def check_obj(self, G, text):
+        """One face per stored edge on its plane z = d / w, counter-clockwise,
+        with the edge's corners; then the cap's bounded faces at z = T.
+        Returns the faces (0-based)."""
+        nodes = G.doc["nodes"]
+        verts, faces = [], []
+        for line in text.splitlines():
+            if line.startswith("v "):
+                verts.append([float(c) for c in line.split()[1:]])
+            elif line.startswith("f "):
+                faces.append([int(c) - 1 for c in line.split()[1:]])
+            else:
+                self.assertTrue(line.startswith("#"), line)
+        self.assertEqual(verts, [[float(c) for c in v] for v in nodes])
+        self.assertGreaterEqual(len(faces), G.n)
+        tol = 1e-6 * G.scale
+        for i, face in enumerate(faces):
+            pts = [verts[v] for v in face]
+            self.assertGreater(ring_area(pts), -tol * tol, "face %d is clockwise" % i)
+            if i < G.n:
+                self.assertIn(i, face)
+                self.assertIn(G.nxt[i], face)
+                for v in face:
+                    x, y, z = verts[v]
+                    self.assertLessEqual(z, G.T * (1 + 1e-12))
+                    self.assertAlmostEqual(G.left_distance(i, x, y), G.w[i] * z, delta=tol,
+                                           msg="face %d vertex %d off its plane" % (i, v))
+            else:
+                self.assertEqual({verts[v][2] for v in face}, {G.T}, "cap face %d" % i)
+        return faces
+
+    def check_vtp(self, G, faces, args):
+        try:
+            import vtk  # python3-vtk9
+        except ImportError:
+            return
+        path = os.path.join(self.tmp.name, "roof.vtp")
+        rc, _, err = tl.wskel(["--format", "vtp", "-o", path] + args)
+        self.assertEqual(rc, 0, err)
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(path)
+        reader.Update()
+        self.assertEqual(reader.GetErrorCode(), 0)
+        pd = reader.GetOutput()
+        self.assertEqual(pd.GetNumberOfPoints(), len(G.doc["nodes"]))
+        self.assertEqual(pd.GetNumberOfLines(), G.n + len(G.doc["arcs"]))
+        ids = vtk.vtkIdList()
+        polys = pd.GetPolys()
+        polys.InitTraversal()
+        got = []
+        while polys.GetNextCell(ids):
+            got.append([ids.GetId(j) for j in range(ids.GetNumberOfIds())])
+        self.assertEqual(got, faces, "vtp polygons differ from the obj faces")
+
+    def check_svg(self, G, text, times):
+        root = ET.fromstring(text)
+        ns = {"s": "http://www.w3.org/2000/svg"}
+        paths = root.findall(".//s:path", ns)
+        classes = [p.get("class") for p in paths]
+        self.assertNotIn("polygon", classes, "a PSLG has no region to fill")
+        seg = [p for p in paths if p.get("class") == "segments"]
+        self.assertEqual(len(seg), 1)
+        self.assertEqual(seg[0].get("d").count("M"), G.doc["pslg"]["graph_edges"])
+        caps = sum(1 for a in G.doc["arcs"] if a[2] == -1)
+        got = sum(p.get("d").count("M") for p in paths if p.get("class") == "cap")
+        self.assertEqual(got, caps)
+        offs = [p for p in paths if p.get("class") == "offset"]
+        self.assertEqual(len(offs), len(times))
+        counts = []
+        for p, t in zip(offs, times):
+            self.assertAlmostEqual(float(p.get("data-t")), t, delta=1e-9 * t)
+            segs = p.get("d").split("M")[1:]
+            self.assertGreater(len(segs), 0, "no offset curve at t = %g" % t)
+            counts.append(len(segs))
+            for s in segs:
+                self.assertTrue(s.endswith("Z"), "an offset ring is not closed")
+                for xy in s[:-1].split("L"):
+                    x, y = (float(c) for c in xy.split(","))
+                    self.assertTrue(self.on_wavefront(G, x, -y, t, 1e-6),
+                                    "svg offset point (%g, %g) at t = %g" % (x, -y, t))
+        return counts
+
+    def on_wavefront(self, G, x, y, t, rel):
+        """(x, y) at distance w t from some stored edge's line, on its face's side."""
+        return any(abs(G.left_distance(e, x, y) - G.w[e] * t) <= rel * G.scale
+                   for e in range(G.n))
+
+    def check_offsets(self, G, gj, wkt, times, faces):
+        self.assertEqual(gj["type"], "FeatureCollection")
+        feats = gj["features"]
+        self.assertEqual([f["properties"]["t"] for f in feats], times)
+        lines = [l for l in wkt.splitlines() if l.strip()]
+        self.assertEqual(len(lines), len(times))
+        for f, line, t in zip(feats, lines, times):
+            polys = f["geometry"]["coordinates"]
+            self.assertGreater(len(polys), 0, "no offset polygon at t = %g" % t)
+            self.assertTrue(line.startswith("MULTIPOLYGON ((("), line[:40])
+            self.assertEqual(line.count("(("), len(polys), "wkt and geojson disagree")
+            area = 0.0
+            for rings in polys:
+                for k, ring in enumerate(rings):
+                    self.assertEqual(ring[0], ring[-1], "ring not closed")
+                    a = ring_area(ring[:-1])
+                    self.assertTrue(a > 0 if k == 0 else a < 0, "ring %d orientation" % k)
+                    area += a
+                    for x, y in ring:
+                        self.assertTrue(self.on_wavefront(G, x, y, t, 1e-6),
+                                        "offset point (%g, %g) at t = %g" % (x, y, t))
+            if t == G.T:
+                # the region swept by T is the roof's edge faces, seen from above
+                verts = G.doc["nodes"]
+                roof = sum(ring_area([verts[v] for v in face]) for face in faces[:G.n])
+                self.assertAlmostEqual(area, roof, delta=1e-9 * G.scale ** 2 + 1e-9 * roof)
+
+
 if __name__ == "__main__":
     unittest.main()

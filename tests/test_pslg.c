@@ -15,8 +15,12 @@
 ** weights) through the validator; validator mutations that must fail;
 ** every other variant refuses a PSLG (WK_EUNSUPPORTED); determinism;
 ** allocation failures over reader, builder, solver and validator; and no
-** tracked bytes left.
+** tracked bytes left.  Outputs: offsets (the swept region: a square ring's
+** in closed form; on the generated graphs rings on the wavefront, the
+** swept area growing), the OBJ roof (faces on their planes, their area the
+** swept area at T), allocation failures in the writers.
 */
+#define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include <criterion/criterion.h>
 
 #include "helpers.h"
@@ -624,8 +628,204 @@ static int generated_graph(graph_buf *G, uint64_t seed0, uint64_t *seed) {
     return family;
 }
 
+/* ---- outputs of a PSLG's skeleton (write_obj_capped.c, write_svg.c,
+** offset.c) */
+
+/* Signed distance of (x, y) from stored edge e's line, > 0 on its face's side. */
+static double left_distance(const wk_polygon *P, uint32_t e, double x, double y) {
+    wk_point a = P->p[e], d = wk_polygon_edge_dir(P, e);
+    return (d.x * (y - a.y) - d.y * (x - a.x)) / hypot(d.x, d.y);
+}
+
+/* (x, y) lies on the wavefront at t: at distance w t from a stored edge's line. */
+static bool on_wavefront(const wk_polygon *P, double x, double y, double t, double tol) {
+    for (uint32_t e = 0; e < P->n; e++)
+        if (fabs(left_distance(P, e, x, y) - P->w[e] * t) <= tol) return true;
+    return false;
+}
+
+/* The offsets at a quarter, a half, three quarters and all of the horizon:
+** each a set of polygons around the swept region (outer ring
+** counter-clockwise, holes clockwise), every vertex on the wavefront at t,
+** the swept area growing with t; none at t = 0; a time past the horizon
+** refused.  Returns the swept area at T. */
+static double check_pslg_offsets(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                 const char *what) {
+    double T = S->horizon, tol = 1e-7 * wk_polygon_scale(P), last = 0;
+    for (int k = 0; k <= 4; k++) {
+        double t = T * k / 4;
+        wk_offset_set *O;
+        wk_status st = wk_offset(R, P, S, t, &O);
+        char msg[1024];
+        err_text(R, msg, sizeof msg);
+        cr_assert_eq(st, WK_OK, "%s: offset at %g: %s", what, t, msg);
+        if (k == 0) cr_assert_eq(O->n_rings, 0, "%s: a swept region at t = 0", what);
+        double area = 0;
+        for (uint32_t c = 0; c < O->n_polygons; c++)
+            for (uint32_t r = O->polygon_start[c]; r < O->polygon_start[c + 1]; r++) {
+                double a = wk_offset_ring_area(O, r);
+                cr_assert(r == O->polygon_start[c] ? a > 0 : a < 0,
+                          "%s: t = %g ring %u area %g", what, t, r, a);
+                area += a;
+            }
+        for (uint32_t i = 0; i < O->ring_start[O->n_rings]; i++)
+            cr_assert(on_wavefront(P, O->p[i].x, O->p[i].y, t, tol),
+                      "%s: offset vertex (%g, %g) at t = %g is on no wavefront edge", what,
+                      O->p[i].x, O->p[i].y, t);
+        cr_assert_geq(area, last - tol * tol, "%s: the swept area shrinks at t = %g", what, t);
+        if (k > 0) cr_assert_gt(area, last, "%s: nothing swept between offsets at t = %g", what, t);
+        last = area;
+        wk_offset_set_free(R, O);
+    }
+    wk_offset_set *O = NULL;
+    cr_assert_eq(wk_offset(R, P, S, 2 * T, &O), WK_EUNSUPPORTED, "%s: offset past the horizon", what);
+    cr_assert_null(O);
+    return last;
+}
+
+/* The OBJ roof: one face per stored edge, each vertex on that edge's roof
+** plane (z = d / w), then the cap's faces at z = T; the edge faces'
+** projections add up to the swept area at T (a face's islands are bridged
+** in, their loops clockwise).  A cap face with a hole is refused
+** (WK_EUNSUPPORTED); returns false then. */
+static bool check_pslg_obj(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double swept,
+                           const char *what) {
+    FILE *f = tmpfile();
+    cr_assert_not_null(f);
+    wk_status st = wk_write_obj(R, f, P, S);
+    if (st == WK_EUNSUPPORTED) {
+        fclose(f);
+        R->err.code = WK_OK;
+        return false;
+    }
+    char msg[1024];
+    err_text(R, msg, sizeof msg);
+    cr_assert_eq(st, WK_OK, "%s: obj: %s", what, msg);
+    rewind(f);
+    static wk_node v[4096];
+    uint32_t nv = 0, face = 0;
+    double tol = 1e-7 * wk_polygon_scale(P), area = 0;
+    static char line[1 << 16];
+    while (fgets(line, sizeof line, f)) {
+        if (line[0] == 'v') {
+            cr_assert_lt(nv, 4096);
+            cr_assert_eq(sscanf(line, "v %lf %lf %lf", &v[nv].x, &v[nv].y, &v[nv].t), 3);
+            nv++;
+        } else if (line[0] == 'f') {
+            char *p = line + 1, *end;
+            uint32_t first = WK_NONE, prev = WK_NONE;
+            double a = 0;
+            for (unsigned long k; (k = strtoul(p, &end, 10)), end != p; p = end) {
+                cr_assert(k >= 1 && k <= nv, "%s: face %u vertex %lu", what, face, k);
+                const wk_node *q = &v[k - 1];
+                if (face < P->n)
+                    cr_assert(fabs(left_distance(P, face, q->x, q->y) - P->w[face] * q->t) <= tol,
+                              "%s: face %u vertex %lu off its plane", what, face, k);
+                else
+                    cr_assert_eq(q->t, S->horizon, "%s: cap face %u", what, face);
+                if (prev != WK_NONE) a += v[prev].x * q->y - q->x * v[prev].y;
+                else first = (uint32_t)k - 1;
+                prev = (uint32_t)k - 1;
+            }
+            a += v[prev].x * v[first].y - v[first].x * v[prev].y;
+            cr_assert_geq(a, -tol * tol, "%s: face %u is clockwise", what, face);
+            if (face < P->n) area += a / 2;
+            face++;
+        }
+    }
+    fclose(f);
+    cr_assert_geq(face, P->n, "%s: %u faces", what, face);
+    cr_assert(fabs(area - swept) <= 1e-9 * swept + tol * tol, "%s: roof area %.17g, swept %.17g",
+              what, area, swept);
+    return true;
+}
+
+Test(pslg, ring_offsets_closed_form) {
+    /* a 10 x 10 square ring cut at T = 3: at t the swept region is the
+    ** square [-t, 10 + t]^2 with the hole [t, 10 - t]^2; the roof has one
+    ** face per half-edge and the cap face [3, 7]^2 inside (the outer
+    ** wavefront is the rim: no face) */
+    double x[4] = {0, 10, 10, 0}, y[4] = {0, 0, 10, 10};
+    uint32_t s[4] = {0, 1, 2, 3}, d[4] = {1, 2, 3, 0};
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P;
+    wk_skeleton *S;
+    expect_ok(&R, solve_pslg(&R, 4, x, y, 4, s, d, NULL, 3, &P, &S));
+    for (int k = 1; k <= 3; k++) {
+        wk_offset_set *O;
+        expect_ok(&R, wk_offset(&R, P, S, k, &O));
+        cr_assert_eq(O->n_polygons, 1);
+        cr_assert_eq(O->n_rings, 2);
+        cr_assert_float_eq(wk_offset_ring_area(O, 0), (10 + 2.0 * k) * (10 + 2.0 * k), 1e-9);
+        cr_assert_float_eq(wk_offset_ring_area(O, 1), -(10 - 2.0 * k) * (10 - 2.0 * k), 1e-9);
+        wk_offset_set_free(&R, O);
+    }
+    double swept = check_pslg_offsets(&R, P, S, "square ring");
+    cr_assert_float_eq(swept, 16.0 * 16.0 - 4.0 * 4.0, 1e-9);
+    cr_assert(check_pslg_obj(&R, P, S, swept, "square ring"));
+    release(&R, P, S);
+}
+
+/* What writer w writes for the ring with a spoke cut at T = 3, with the
+** allocation after k more calls failing (k < 0: none); NULL on failure.
+** (0 obj, 1 vtp, 2 svg with offsets at 1 and 3, 3 the offsets at 2 as
+** GeoJSON.) */
+static char *write_spoked_ring(int w, int64_t k, wk_status *st) {
+    double x[5] = {0, 10, 10, 0, 5}, y[5] = {0, 0, 10, 10, 5};
+    uint32_t s[5] = {0, 1, 2, 3, 0}, d[5] = {1, 2, 3, 0, 4};
+    const double times[2] = {1, 3};
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P;
+    wk_skeleton *S;
+    expect_ok(&R, solve_pslg(&R, 5, x, y, 5, s, d, NULL, 3, &P, &S));
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    cr_assert_not_null(f);
+    wk_offset_set *O = NULL;
+    if (k >= 0) R.alloc.fail_after = (int64_t)R.alloc.calls + k;
+    *st = w == 0   ? wk_write_obj(&R, f, P, S)
+          : w == 1 ? wk_write_vtp(&R, f, P, S)
+          : w == 2 ? wk_write_svg(&R, f, P, S, times, 2)
+                   : wk_offset(&R, P, S, 2, &O);
+    if (*st == WK_OK && w == 3) *st = wk_write_offsets_geojson(&R, f, P, &O, 1);
+    R.alloc.fail_after = -1;
+    fclose(f);
+    wk_offset_set_free(&R, O);
+    release(&R, P, S);
+    if (*st != WK_OK) {
+        free(buf);
+        return NULL;
+    }
+    return buf;
+}
+
+Test(pslg, writers_out_of_memory_at_every_allocation) {
+    /* every failure is WK_ENOMEM with nothing left allocated, and the first
+    ** run that succeeds writes exactly what a run without faults writes (a
+    ** failure never passes as a shorter output) */
+    for (int w = 0; w < 4; w++) {
+        wk_status st;
+        char *want = write_spoked_ring(w, -1, &st);
+        cr_assert_eq(st, WK_OK, "writer %d", w);
+        for (int64_t k = 0;; k++) {
+            char *got = write_spoked_ring(w, k, &st);
+            if (st == WK_OK) {
+                cr_assert_str_eq(got, want, "writer %d, allocation %lld", w, (long long)k);
+                free(got);
+                break;
+            }
+            cr_assert_eq(st, WK_ENOMEM, "writer %d, allocation %lld", w, (long long)k);
+            cr_assert_lt(k, 200);
+        }
+        free(want);
+    }
+}
+
 Test(pslg, generated_graphs_pass_the_validator) {
-    uint32_t cases = 0, events = 0;
+    uint32_t cases = 0, events = 0, roofs = 0;
     static graph_buf G;
     /* WSKEL_PSLG_CASES=N: a longer sweep by hand */
     uint64_t n_seeds = quick() ? 30 : 90;
@@ -657,10 +857,17 @@ Test(pslg, generated_graphs_pass_the_validator) {
                          (unsigned long long)seed0, family, weighted, untils[u], G.nv, G.ne, msg);
             events += (uint32_t)counter(&R, "edge_events") + (uint32_t)counter(&R, "split_events");
             cases++;
+            char what[96];
+            snprintf(what, sizeof what, "seed %llu family %d weighted %d until %g",
+                     (unsigned long long)seed0, family, weighted, untils[u]);
+            roofs += check_pslg_obj(&R, P, S, check_pslg_offsets(&R, P, S, what), what);
             release(&R, P, S);
         }
     }
-    cr_log_info("pslg sweep: %u cases validated, %u events", cases, events);
+    cr_log_info("pslg sweep: %u cases validated, %u events, %u roofs (the others have a cap "
+                "face with a hole)",
+                cases, events, roofs);
+    cr_assert_gt(roofs, cases / 2, "only %u of %u roofs written", roofs, cases);
     cr_assert_gt(cases, 40, "only %u cases ran", cases);
     cr_assert_gt(events, 100, "the generated graphs had only %u events", events);
 }
