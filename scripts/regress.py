@@ -39,9 +39,11 @@ Runs under --min-time seconds (0.05) are not timed for the check: at that
 scale the spread between processes is larger still (arrangement notched
 n=1000 k=1, 20 ms: x1.56 between the baseline and a CI run of the same code).
 Confirmation (--confirm BENCH): a configuration flagged for time alone is
-run again --confirm-rounds times (5 repeats each) and judged by the fastest
-repeat over the sweep and the re-runs.  A real slowdown survives every
-round; a burst of load from a neighbour does not.
+run again --confirm-rounds times (5 repeats each), each round beside a re-run
+of the reference that gives that round's machine speed, and judged by its
+best round (or the sweep, if better).  A real slowdown survives every
+round; a burst of load from a neighbour does not, and a load that differs
+between the sweep and the re-runs cancels out.
 Run and baseline must have the same
 set of counter columns (in any order); otherwise regenerate the baseline.
 Prints a table (only the interesting lines unless --all) and exits 1 on any
@@ -129,12 +131,13 @@ def main():
     _, run_rows = load_csv(args.run)
     _, base_rows = load_csv(args.baseline)
     run_ref, _ = reference_time(run_rows)
-    base_ref, _ = reference_time(base_rows)
+    base_ref, base_ref_rows = reference_time(base_rows)
     if not run_ref or not base_ref:
         print("regress: reference %s missing or not ok in %s" % (
             REFERENCE, "the run" if not run_ref else "the baseline"))
         return 2
     run_g, base_g = group(run_rows), group(base_rows)
+    ref_key = config_key(base_ref_rows[0], drop=("repeat",))
 
     def ok_times(rows):
         return [x["wall_s"] for x in rows if x["status"] == "ok" and x["wall_s"]]
@@ -188,13 +191,20 @@ def main():
             ch = min(rt) / min(bt) / speed
             timed = statistics.median(bt) >= args.min_time
             if timed and ch > args.time_tol and not problems and args.confirm:
-                cfg_t = list(rt)
+                # Each round re-runs the reference beside the configuration and
+                # scales by that round's own speed: the load during the sweep
+                # (which set `speed`) is not the load now, and a quieter or
+                # busier machine must not clear or keep a flag by itself.
+                best = ch
                 with tempfile.TemporaryDirectory() as tmpdir:
                     for i in range(args.confirm_rounds):
-                        cfg_t += rerun(args.confirm, key, tmpdir, "cfg%d" % i)
+                        ref_t = rerun(args.confirm, ref_key, tmpdir, "ref%d" % i)
+                        cfg_t = rerun(args.confirm, key, tmpdir, "cfg%d" % i)
+                        if ref_t and cfg_t:
+                            best = min(best, min(cfg_t) / min(bt) / (min(ref_t) / base_ref))
                 confirmed = " (x%.2f in the sweep, re-measured %d rounds)" % (
                     ch, args.confirm_rounds)
-                ch = min(cfg_t) / min(bt) / speed
+                ch = best
             if timed and ch > args.time_tol:
                 problems.append("time x%.2f (tolerance x%.2f)%s" % (
                     ch, args.time_tol, confirmed))
