@@ -49,7 +49,7 @@
 ** ahead of it, not to the collapse of its own triangle 2.5 units ahead: the
 ** plan failed at eps_d, and 4 eps_d gave a valid skeleton with unit-sized
 ** features resolved at t = 0
-** (tests/data/fuzz/mismatch_naive_wrong_integer_needles_*.wpoly,
+** (the fuzz findings integer_needles_a and _b,
 ** tests/data/degenerate/needle_tip_nearest_node.wpoly). */
 static uint32_t find_cluster_within(const wk_wavefront *W, wk_point p, double r) {
     double best = r * r;
