@@ -41,11 +41,27 @@
 
 /* ------------------------------------------------------------ clusters */
 
+/* The nearest node within r of p, WK_NONE if there is none.  Nearest, not
+** the first found: a fast vertex's radius spans several nodes of the group
+** (a vertex of speed 2e6 covers 18 units in eps_t), and the node it really
+** reaches is the one closest to where it is.  Taking the first (in cluster
+** order) sent the tip of a needle 1e6 long to the node of a split 5 units
+** ahead of it, not to the collapse of its own triangle 2.5 units ahead: the
+** plan failed at eps_d, and 4 eps_d gave a valid skeleton with unit-sized
+** features resolved at t = 0
+** (the fuzz findings integer_needles_a and _b,
+** tests/data/degenerate/needle_tip_nearest_node.wpoly). */
 static uint32_t find_cluster_within(const wk_wavefront *W, wk_point p, double r) {
-    double e2 = r * r;
-    for (uint32_t k = 0; k < W->n_cl; k++)
-        if (wf_dist2(W->cl[k].p, p) <= e2) return k;
-    return WK_NONE;
+    double best = r * r;
+    uint32_t k_best = WK_NONE;
+    for (uint32_t k = 0; k < W->n_cl; k++) {
+        double d2 = wf_dist2(W->cl[k].p, p);
+        if (d2 <= best) {
+            best = d2;
+            k_best = k;
+        }
+    }
+    return k_best;
 }
 
 static uint32_t find_cluster(const wk_wavefront *W, wk_point p) {

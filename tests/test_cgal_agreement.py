@@ -119,6 +119,12 @@ def hand_made():
         # --check did not see
         "crack": [(1, 1), (4, 6), (3, 1003.0001974), (3, 1003), (1, 3), (1.0059997, 6),
                   (0, 6)],
+        # a needle 2e6 long whose tip moves 21.5 units within eps_t, and unit
+        # features at its base (tests/data/degenerate/needle_tip_nearest_node.wpoly):
+        # the tip arrived at a split node beyond its own collapse, the run
+        # escalated and resolved the unit features at t = 0
+        "needle": [(0, 0), (2, -2000000), (1, 2), (3, 2), (3, 0), (2, -500000),
+                   (5000000, 6), (3, 6), (4, 4), (1, 4), (1, 6), (0, 6)],
     }
     for k in range(3, 13):
         polys["regular%d" % k] = regular(k)
@@ -127,6 +133,7 @@ def hand_made():
     polys["collinear_cw"] = list(reversed(polys["collinear"]))
     polys["regular7_cw"] = list(reversed(polys["regular7"]))
     polys["crack_cw"] = list(reversed(polys["crack"]))
+    polys["needle_cw"] = list(reversed(polys["needle"]))
     return {k: [(float(x), float(y)) for x, y in v] for k, v in polys.items()}
 
 
