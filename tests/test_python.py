@@ -17,7 +17,22 @@
     replaces the stand-in): area decreasing, outer rings CCW, holes CW;
   - roof: one face per input edge, each starting with its edge, the faces'
     projected areas summing to the polygon's, z = t;
-  - the README's Python example prints what its comments say;
+  - PSLGs: pslg_skeleton on every tests/data/pslg file (and the GraphML
+    polygons of tests/data/good read as PSLGs), naive and motorcycle,
+    default horizon and until = 0.3 diagonals, equal to bin/wskel
+    --format json on the file (nodes bit for bit, arcs, horizon, rings,
+    corner_node, edge_of; a variant the CLI refuses raises the same
+    class); pslg_offset against the CLI's --offset geojson, pslg_roof
+    against its OBJ (a roof the CLI refuses raises UnsupportedError);
+    closed forms (a segment's swept region is the rectangle [-t, L + t] x
+    [-t, t], its roof's edge faces lie on their planes); errors: crossing
+    and touching edges, an isolated node, a duplicate point, bad shapes
+    and indices are InputError naming the culprit, a polygon-only variant
+    and motorcycle with weights UnsupportedError, until <= 0 UsageError,
+    an offset past a given until UnsupportedError; allocation failures of
+    the three calls;
+  - the README's Python example, and its PSLG example, print what their
+    comments say;
   - examples/plot_skeleton.py writes a PNG;
   - threads: four threads solving at once get the serial results;
   - allocation failures: each allocation request of a skeleton, offset and
@@ -30,6 +45,7 @@ free's size checked; make test-py runs the file both ways).
 Prints a line per test and 'N passed, N failed'; exits 1 on any failure.
 usage: [WSKEL_CHECKED_RUNS=1] /usr/bin/python3 tests/test_python.py
 """
+import json
 import math
 import os
 import sys
@@ -271,6 +287,249 @@ def test_roof_faces():
         assert abs(total - poly_area) < 1e-9 * poly_area, (total, poly_area)
 
 
+# ------------------------------------------------------------------- PSLGs
+
+PSLG_FILES = sorted(os.path.join(testlib.DATA, "pslg", f)
+                    for f in os.listdir(os.path.join(testlib.DATA, "pslg"))
+                    if f.endswith(".graphml"))
+PSLG_POLYGONS = [os.path.join(testlib.DATA, "good", f)
+                 for f in ("unweighted.graphml", "weighted.graphml")]
+SEGMENT = ([(0, 0), (3, 0)], [(0, 1)])
+
+
+def diagonal(points):
+    p = np.asarray(points, dtype=float)
+    return float(np.hypot(*(p.max(axis=0) - p.min(axis=0))))
+
+
+def pslg_cases():
+    """(path, points, edges, weights) of every PSLG test file, > 0 of them."""
+    out = []
+    for path in PSLG_FILES + PSLG_POLYGONS:
+        pts, edges, w = wskel.read_graphml(path)
+        out.append((path, pts, edges, w))
+    assert len(out) >= 10, len(out)
+    return out
+
+
+def test_pslg_skeleton_matches_cli():
+    """The binding gives bin/wskel's skeleton of the same file: nodes bit
+    for bit (same arrays, same computation; %.17g round-trips), arcs with
+    the cap as -1, horizon, rings, corners' nodes, edges' graph edges."""
+    testlib.need(testlib.WSKEL)
+    compared = refused = 0
+    for path, pts, edges, w in pslg_cases():
+        for variant in ("naive", "motorcycle"):
+            for until in (None, 0.3 * diagonal(pts)):
+                args = ["--pslg", path] + (["--until", repr(until)] if until else [])
+                rc, doc, err = testlib.wskel_json(args, variant)
+                if rc != 0:
+                    e = expect(wskel.Error, wskel.pslg_skeleton, pts, edges, w, until=until,
+                               variant=variant)
+                    assert e.exit_code == rc, (path, variant, rc, err, e)
+                    refused += 1
+                    continue
+                sk = wskel.pslg_skeleton(pts, edges, w, until=until, variant=variant, name=path)
+                got = np.column_stack([sk.nodes["x"], sk.nodes["y"], sk.nodes["t"]])
+                want = np.asarray(doc["nodes"], dtype=float)
+                assert got.shape == want.shape and np.array_equal(got, want), (path, variant)
+                assert sk.arcs.tolist() == [tuple(a) for a in doc["arcs"]], (path, variant)
+                ps = doc["pslg"]
+                assert sk.horizon == ps["horizon"] and sk.n == doc["n"], (path, variant)
+                assert sk.rings.tolist() == doc["rings"], (path, variant)
+                assert sk.corner_node.tolist() == ps["corner_node"], (path, variant)
+                assert sk.edge_of.tolist() == ps["edge_of"], (path, variant)
+                if until:
+                    assert sk.horizon == until, (path, sk.horizon, until)
+                # the cap: arcs with the unswept side (-1) on the left, at t = T
+                cap = sk.arcs[sk.arcs["left"] == -1]
+                assert len(cap) > 0 and (sk.arcs["right"] >= 0).all(), path
+                assert np.all(sk.nodes["t"][cap["a"]] == sk.horizon), path
+                compared += 1
+    # the weighted files are refused by motorcycle (equal weights only)
+    assert compared >= 30 and refused >= 4, (compared, refused)
+    print("  (%d skeletons equal to the CLI's, %d refused by both)" % (compared, refused))
+
+
+def geojson_rings(doc):
+    """[[[rings as (m, 2) arrays, closing point dropped] per polygon] per t]."""
+    out = []
+    for feat in doc["features"]:
+        out.append([[np.asarray(r, dtype=float)[:-1] for r in poly]
+                    for poly in feat["geometry"]["coordinates"]])
+    return out
+
+
+def test_pslg_offset_matches_cli():
+    testlib.need(testlib.WSKEL)
+    compared = 0
+    for path, pts, edges, w in pslg_cases():
+        d = diagonal(pts)
+        times = [0.05 * d, 0.2 * d, 0.6 * d]
+        rc, out, err = testlib.wskel(["--pslg", "--format", "geojson", "--offset",
+                                      ",".join(repr(t) for t in times), path])
+        assert rc == 0, (path, err)
+        want = geojson_rings(json.loads(out))
+        got = wskel.pslg_offset(pts, edges, w, t=times)
+        assert len(got) == len(want) == 3, path
+        for ti, g, x in zip(times, got, want):
+            assert len(g) == len(x) > 0, (path, ti, len(g), len(x))
+            for gp, xp in zip(g, x):
+                assert len(gp) == len(xp), (path, ti)
+                for gr, xr in zip(gp, xp):
+                    assert gr.shape == xr.shape and np.array_equal(gr, xr), (path, ti)
+            compared += 1
+        # one time alone: the same region (to rounding: the list's largest
+        # time is past the default horizon, so its skeleton was followed
+        # further, and its nodes at the same events can differ in the last bit)
+        one = wskel.pslg_offset(pts, edges, w, t=times[0])
+        assert len(one) == len(got[0]) and all(
+            a.shape == b.shape and np.allclose(a, b, rtol=0, atol=1e-12 * diagonal(pts))
+            for pa, pb in zip(one, got[0]) for a, b in zip(pa, pb)), path
+    assert compared >= 30, compared
+
+
+def read_obj(text):
+    v, f = [], []
+    for line in text.splitlines():
+        if line.startswith("v "):
+            v.append([float(x) for x in line.split()[1:]])
+        elif line.startswith("f "):
+            f.append([int(x) - 1 for x in line.split()[1:]])
+    return np.asarray(v, dtype=float), f
+
+
+def test_pslg_roof_matches_cli_obj():
+    """pslg_roof is the CLI's OBJ roof (vertices bit for bit, faces), at
+    the default horizon (no bounded wavefront left: edge faces only) and
+    at 0.3 and 0.03 diagonals (cap faces at z = T closing the bounded
+    faces still alive)."""
+    testlib.need(testlib.WSKEL)
+    compared = refused = cap_faces = 0
+    for path, pts, edges, w in pslg_cases():
+        for until in (None, 0.3 * diagonal(pts), 0.03 * diagonal(pts)):
+            args = ["--pslg", "--format", "obj", path] + (["--until", repr(until)] if until else [])
+            rc, out, err = testlib.wskel(args)
+            if rc != 0:
+                e = expect(wskel.UnsupportedError, wskel.pslg_roof, pts, edges, w, until=until)
+                assert rc == 2 and "encloses a component" in e.message, (path, rc, err, e)
+                refused += 1
+                continue
+            verts, faces = read_obj(out)
+            r = wskel.pslg_roof(pts, edges, w, until=until)
+            assert np.array_equal(r.vertices, verts), path
+            assert [f.tolist() for f in r.faces] == faces, (path, until)
+            sk = wskel.pslg_skeleton(pts, edges, w, until=until)
+            assert r.n_edge_faces == sk.n and r.horizon == sk.horizon, path
+            # the cap faces lie at z = T
+            for f in r.faces[r.n_edge_faces:]:
+                assert np.all(r.vertices[f, 2] == r.horizon), path
+            cap_faces += len(r.faces) - r.n_edge_faces
+            compared += 1
+    assert compared >= 30 and cap_faces >= 5, (compared, refused, cap_faces)
+    print("  (%d roofs equal to the CLI's OBJ, %d cap faces, %d refused by both)"
+          % (compared, cap_faces, refused))
+
+
+def test_pslg_segment_closed_form():
+    """A segment of length L: the region swept by t is the rectangle
+    [-t, L + t] x [-t, t] (the caps move along the segment); its roof's
+    faces lie on their planes (the sides z = |y|, the caps z = -x and
+    z = x - L), weights scaling t."""
+    pts, edges = [(0, 0), (3, 0)], [(0, 1)]
+    for wt in (1.0, 2.5):
+        for t in (0.1, 0.5, 2.0):
+            polys = wskel.pslg_offset(pts, edges, [wt], t=t)
+            assert len(polys) == 1 and len(polys[0]) == 1, polys
+            ring = polys[0][0]
+            d = wt * t
+            want = {(-d, -d), (3 + d, -d), (3 + d, d), (-d, d)}
+            got = {(round(float(x), 12), round(float(y), 12)) for x, y in ring}
+            assert got == {(round(x, 12), round(y, 12)) for x, y in want}, (wt, t, ring)
+            assert area(ring) > 0  # counter-clockwise
+        r = wskel.pslg_roof(pts, edges, [wt], until=1.0)
+        assert r.horizon == 1.0 and r.n_edge_faces == 4 and len(r.faces) == 4
+        sk = wskel.pslg_skeleton(pts, edges, [wt], until=1.0)
+        for i, f in enumerate(r.faces):
+            e = sk.edge_of[i]
+            v = r.vertices[f]
+            if e >= 0:  # a side: distance from the segment's line = w t
+                assert np.allclose(np.abs(v[:, 1]), wt * v[:, 2], atol=1e-12), (i, v)
+            else:  # a cap: distance beyond its terminal = w t
+                beyond = np.maximum(-v[:, 0], v[:, 0] - 3)
+                assert np.allclose(beyond, wt * v[:, 2], atol=1e-12), (i, v)
+
+
+def test_pslg_errors():
+    e = expect(wskel.InputError, wskel.pslg_skeleton, [(0, 0), (2, 2), (2, 0), (0, 2)],
+               [(0, 1), (2, 3)], name="x.graphml")
+    assert e.exit_code == 1 and e.input == "x.graphml" and "cross" in e.message, e
+    e = expect(wskel.InputError, wskel.pslg_skeleton, [(0, 0), (2, 0), (1, 0), (1, 1)],
+               [(0, 1), (2, 3)])
+    assert "touch" in e.message or "overlap" in e.message, e
+    e = expect(wskel.InputError, wskel.pslg_skeleton, [(0, 0), (1, 0), (5, 5)], [(0, 1)])
+    assert "isolated" in e.message or "no edge" in e.message, e
+    e = expect(wskel.InputError, wskel.pslg_skeleton, [(0, 0), (1, 0), (1, 0)], [(0, 1), (0, 2)])
+    assert e.exit_code == 1, e
+    for pts, edges, w, what in (([(0, 0, 1)], [(0, 1)], None, "points must be"),
+                                (SEGMENT[0], [(0, 1, 2)], None, "edges must be"),
+                                (SEGMENT[0], [(0.0, 1.0)], None, "edges must be"),
+                                (SEGMENT[0], [(0, 2)], None, "out of range"),
+                                (SEGMENT[0], [(0, -1)], None, "out of range"),
+                                (SEGMENT[0], SEGMENT[1], [1, 2], "weights"),
+                                (SEGMENT[0], SEGMENT[1], [-1], "weight")):
+        e = expect(wskel.InputError, wskel.pslg_skeleton, pts, edges, w)
+        assert what in e.message, (what, e)
+    e = expect(wskel.UnsupportedError, wskel.pslg_skeleton, *SEGMENT, variant="arrangement")
+    assert e.exit_code == 2 and "does not take PSLG input" in e.message, e
+    e = expect(wskel.UnsupportedError, wskel.pslg_skeleton, *SEGMENT, weights=[2.0],
+               variant="motorcycle")
+    assert "unit weights only" in e.message, e
+    for bad in (0, -1, float("nan"), float("inf"), "x"):
+        e = expect(wskel.UsageError, wskel.pslg_skeleton, *SEGMENT, until=bad)
+        assert e.exit_code == 64, e
+    e = expect(wskel.InputError, wskel.pslg_skeleton, *SEGMENT, until=1e12)
+    assert e.exit_code == 1, e
+    e = expect(wskel.UnsupportedError, wskel.pslg_offset, *SEGMENT, t=[0.5, 2.0], until=1.0)
+    assert "beyond the horizon" in e.message, e
+    # past the default horizon without until: followed up to the latest t
+    polys = wskel.pslg_offset(*SEGMENT, t=50.0)
+    assert len(polys) == 1 and abs(area(polys[0][0]) - 100 * 103) < 1e-6, polys
+    e = expect(wskel.UsageError, wskel.pslg_skeleton, *SEGMENT, variant="nope")
+    assert "unknown variant" in e.message, e
+    e = expect(wskel.InputError, wskel.read_graphml, os.path.join(TMP, "missing.graphml"))
+    assert "missing.graphml" in e.input, e
+
+
+def test_pslg_allocation_failures_leave_nothing():
+    pts, edges, w = wskel.read_graphml(os.path.join(testlib.DATA, "pslg", "square_dangling.graphml"))
+    calls = [lambda: wskel.pslg_skeleton(pts, edges, w),
+             lambda: wskel.pslg_offset(pts, edges, w, t=[0.1, 0.4]),
+             lambda: wskel.pslg_roof(pts, edges, w)]
+    before = wskel.run_stats()
+    for call in calls:
+        wskel._test_alloc["checked"] = True
+        try:
+            call()
+            total = wskel.run_stats()["last_alloc_requests"]
+            assert total > 5, total
+            refused = 0
+            for fail_at in range(1, total + 1):
+                wskel._test_alloc["fail_at"] = fail_at
+                try:
+                    call()
+                except wskel.MemoryLimitError as e:
+                    assert e.exit_code == 2 and e.status == "out of memory", e
+                    refused += 1
+                finally:
+                    wskel._test_alloc["fail_at"] = 0
+            assert refused >= total // 2, (refused, total)
+        finally:
+            wskel._test_alloc["checked"] = False
+    after = wskel.run_stats()
+    assert after["leaked_bytes"] == before["leaked_bytes"] == 0, after
+
+
 def test_readme_example_runs():
     """The README's Python example, run as given from the repository root,
     prints what its comments say."""
@@ -285,6 +544,24 @@ def test_readme_example_runs():
     assert lines[1] == "[(1, 4, 0, 1) (0, 5, 3, 0)]", lines
     assert lines[2] == "2" and lines[-2] == "4 [0 1 4 5]", lines
     assert lines[-1] == "1 edge 0 crosses edge 2", lines
+
+
+def test_readme_pslg_example_runs():
+    """The README's PSLG example (the indented block in the Python
+    section) prints what the comment of each print line says before its
+    last ': '."""
+    text = open(os.path.join(ROOT, "README.md")).read()
+    sec = text.split("## Python\n", 1)[1].split("\n## ", 1)[0]
+    block = sec.split("gives the skeleton `bin/wskel --pslg`", 1)[1].split("\n\n", 2)[1]
+    lines = [ln[6:] for ln in block.splitlines()]
+    assert lines and all(ln.strip() for ln in lines), block
+    want = [ln.split("#", 1)[1].strip().rsplit(": ", 1)[0] for ln in lines
+            if ln.startswith("print(")]
+    assert len(want) >= 5, want
+    code = "import sys; sys.path.insert(0, 'python')\nimport wskel\n" + "\n".join(lines)
+    rc, out, err = run_in_root(code)
+    assert rc == 0, err
+    assert out.splitlines() == want, (out.splitlines(), want)
 
 
 def run_in_root(code):

@@ -20,6 +20,22 @@ Polygons
 Results use that numbering (node i < n is input vertex i; arc faces and
 roof faces are input edges), as the CLI's writers do.
 
+PSLGs (planar straight-line graphs; README "PSLGs")
+    pslg_skeleton, pslg_offset and pslg_roof take a graph instead:
+    points: an (m, 2) array-like of nodes; edges: a (k, 2) array-like of
+    node index pairs; weights: None (1) or one weight per edge.  Nodes and
+    edges in a GraphML file's document order give the skeleton the CLI
+    computes from that file (read_graphml reads one so).  A PSLG's
+    skeleton is unbounded; it is computed up to a time horizon (until=T,
+    or by default until every bounded wavefront has vanished, plus a
+    margin).  Numbering as in the CLI's JSON: node i < n is corner i of the
+    initial wavefront (a node of degree d is d corners, a terminal 2),
+    edge i the piece from corner i to the next corner of its ring (a side
+    of a segment, or a terminal's cap); corner_node and edge_of map them
+    back to the graph (-1: a cap); arcs with left == -1 are the wavefront
+    at the horizon.  Variants: naive (any weights) and motorcycle (equal
+    weights); the others raise UnsupportedError.
+
 Errors are subclasses of wskel.Error carrying .message, .input,
 .input_line, .src_file, .src_line (where in wskel it was raised), .status
 (the engine's status name) and .exit_code (the CLI's exit code for it):
@@ -38,7 +54,9 @@ import os
 
 import numpy as np
 
-__all__ = ["skeleton", "offset", "roof", "variants", "Skeleton", "Roof", "Error", "InputError",
+__all__ = ["skeleton", "offset", "roof", "variants", "Skeleton", "Roof", "pslg_skeleton",
+           "pslg_offset", "pslg_roof", "read_graphml", "PslgSkeleton", "PslgRoof", "Error",
+           "InputError",
            "AlgorithmError", "UnsupportedError", "MemoryLimitError", "InvalidOutputError",
            "UsageError", "LeakError", "K_MAX", "run_stats"]
 
@@ -84,6 +102,12 @@ _offset_copy = _sig("wks_offset_copy", None, _h, _u32p, _u32p, _f64p)
 _c_roof = _sig("wks_roof", ctypes.c_int, _h)
 _roof_size = _sig("wks_roof_size", ctypes.c_uint32, _h)
 _roof_copy = _sig("wks_roof_copy", None, _h, _u32p, _u32p)
+_roof_faces = _sig("wks_roof_faces", ctypes.c_uint32, _h)
+_c_solve_pslg = _sig("wks_solve_pslg", ctypes.c_int, _h, ctypes.c_uint32, _f64p, _f64p,
+                     ctypes.c_uint32, _u32p, _u32p, _f64p, ctypes.c_char_p, ctypes.c_char_p,
+                     ctypes.c_double, ctypes.c_int, ctypes.c_int)
+_pslg_sizes = _sig("wks_pslg_sizes", None, _h, _f64p, _u32p, _u32p, _u32p)
+_pslg_copy = _sig("wks_pslg_copy", None, _h, _u32p, _u32p, _u32p)
 _err_status = _sig("wks_error_status", ctypes.c_int, _h)
 _err_status_name = _sig("wks_error_status_name", ctypes.c_char_p, _h)
 _err_exit = _sig("wks_error_exit_code", ctypes.c_int, _h)
@@ -351,6 +375,7 @@ def roof(outer, holes=(), weights=None, variant="naive", k=1, check=True, name="
             _raise(h)
         sk = _read_skeleton(h)
         n = sk.n
+        assert _roof_faces(h) == n
         starts = np.zeros(n + 1, dtype=np.uint32)
         ids = np.zeros(_roof_size(h), dtype=np.uint32)
         _roof_copy(h, starts.ctypes.data_as(_u32p), ids.ctypes.data_as(_u32p))
@@ -370,3 +395,240 @@ def variants():
             return names
         names.append(nm(v).decode())
         i += 1
+
+
+# ------------------------------------------------------------------ PSLGs
+
+_NONE = 2 ** 32 - 1  # WK_NONE: the cap's side of an arc, a cap's graph edge
+
+
+def _pslg_arrays(points, edges, weights):
+    p = np.ascontiguousarray(np.asarray(points, dtype=np.float64))
+    if p.ndim != 2 or p.shape[1] != 2:
+        raise InputError("points must be an (m, 2) array of nodes (got shape %s)" % (p.shape,),
+                         status="input")
+    try:
+        e = np.asarray(edges)
+    except ValueError:
+        e = None  # ragged
+    if e is None or e.ndim != 2 or e.shape[1] != 2 or (e.size and e.dtype.kind not in "iu"):
+        raise InputError("edges must be a (k, 2) array of integer node indices (got %s)"
+                         % ("shape %s dtype %s" % (e.shape, e.dtype) if e is not None
+                            else "a ragged sequence"), status="input")
+    if e.size and (e.min() < 0 or e.max() >= len(p)):
+        bad = int(np.nonzero((e < 0).any(axis=1) | (e >= len(p)).any(axis=1))[0][0])
+        raise InputError("edge %d: node index out of range (%d, %d) for %d points"
+                         % (bad, e[bad][0], e[bad][1], len(p)), status="input")
+    src = np.ascontiguousarray(e[:, 0], dtype=np.uint32) if e.size else np.zeros(0, np.uint32)
+    dst = np.ascontiguousarray(e[:, 1], dtype=np.uint32) if e.size else np.zeros(0, np.uint32)
+    w = None
+    if weights is not None:
+        w = np.ascontiguousarray(np.asarray(weights, dtype=np.float64))
+        if w.shape != (len(src),):
+            raise InputError("weights: %s values for %d edges (one weight per edge)"
+                             % (w.size if w.ndim == 1 else "shape %s" % (w.shape,), len(src)),
+                             status="input")
+    return p, src, dst, w
+
+
+def _until_arg(until):
+    if until is None:
+        return 0.0
+    try:
+        u = float(until)
+    except (TypeError, ValueError):
+        u = float("nan")
+    if not (u > 0) or u == float("inf"):
+        raise UsageError("until must be a positive number or None (got %r)" % (until,),
+                         status="usage")
+    return u
+
+
+def _solve_pslg(h, points, edges, weights, until, variant, check, name):
+    p, src, dst, w = _pslg_arrays(points, edges, weights)
+    x = np.ascontiguousarray(p[:, 0])
+    y = np.ascontiguousarray(p[:, 1])
+    st = _c_solve_pslg(h, len(p), x.ctypes.data_as(_f64p), y.ctypes.data_as(_f64p), len(src),
+                       src.ctypes.data_as(_u32p), dst.ctypes.data_as(_u32p),
+                       w.ctypes.data_as(_f64p) if w is not None else None, name.encode(),
+                       str(variant).encode(), until, 1, 1 if check else 0)
+    if st != 0:
+        _raise(h)
+
+
+PslgSkeleton = collections.namedtuple(
+    "PslgSkeleton", "nodes arcs counters n time_s peak_bytes horizon rings corner_node edge_of")
+PslgSkeleton.__doc__ = """The straight skeleton of a PSLG up to its horizon.
+nodes: structured array (x, y, t), the first n the corners of the initial
+    wavefront (t = 0), the last ones at t = horizon;
+arcs: structured array (a, b, left, right), left and right int64 stored
+    edges (-1: the cap, the wavefront at the horizon, on the left);
+counters, n, time_s, peak_bytes: as in Skeleton;
+horizon: the time T the skeleton is computed up to;
+rings: the face cycles' sizes (corners in order, as the JSON's "rings");
+corner_node: the graph node of each corner (int64, n values);
+edge_of: the graph edge of each stored edge (int64, -1 for a terminal's cap)."""
+
+PSLG_ARC_DTYPE = np.dtype([("a", np.uint32), ("b", np.uint32), ("left", np.int64),
+                           ("right", np.int64)])
+
+
+def _read_pslg_skeleton(h):
+    sk = _read_skeleton(h)
+    arcs = np.zeros(len(sk.arcs), dtype=PSLG_ARC_DTYPE)
+    for f in ("a", "b"):
+        arcs[f] = sk.arcs[f]
+    for f in ("left", "right"):
+        side = sk.arcs[f].astype(np.int64)
+        side[sk.arcs[f] == _NONE] = -1
+        arcs[f] = side
+    horizon = ctypes.c_double()
+    n_rings, gv, ge = ctypes.c_uint32(), ctypes.c_uint32(), ctypes.c_uint32()
+    _pslg_sizes(h, ctypes.byref(horizon), ctypes.byref(n_rings), ctypes.byref(gv), ctypes.byref(ge))
+    rings = np.zeros(n_rings.value, dtype=np.uint32)
+    corner = np.zeros(sk.n, dtype=np.uint32)
+    edge_of = np.zeros(sk.n, dtype=np.uint32)
+    _pslg_copy(h, rings.ctypes.data_as(_u32p), corner.ctypes.data_as(_u32p),
+               edge_of.ctypes.data_as(_u32p))
+    eo = edge_of.astype(np.int64)
+    eo[edge_of == _NONE] = -1
+    return PslgSkeleton(sk.nodes, arcs, sk.counters, sk.n, sk.time_s, sk.peak_bytes,
+                        float(horizon.value), rings.astype(np.int64), corner.astype(np.int64), eo)
+
+
+def pslg_skeleton(points, edges, weights=None, until=None, variant="naive", check=True,
+                  name="<python>"):
+    """The weighted straight skeleton of a PSLG (see the module doc for
+    points, edges, weights and the numbering) up to the horizon until (a
+    positive time; None: the default horizon, by which every bounded
+    wavefront has vanished).  variant: naive (the reference, any weights)
+    or motorcycle (equal weights; it may hand an input to naive, counted
+    in counters["reference_fallbacks"]); other variants raise
+    UnsupportedError.  check: validate with the PSLG validator (retrying
+    at coarser tolerances; else InvalidOutputError).  Invalid graphs
+    (crossing or touching edges, duplicate points or edges, isolated
+    nodes, edges closer than 1e-7 diagonals, ...) raise InputError naming
+    the edge or node (0-based).  Returns a PslgSkeleton."""
+    with _Run() as h:
+        _solve_pslg(h, points, edges, weights, _until_arg(until), variant, check, name)
+        return _read_pslg_skeleton(h)
+
+
+def pslg_offset(points, edges, weights=None, t=1.0, until=None, variant="naive", check=True,
+                name="<python>"):
+    """The region a PSLG's wavefront has swept by time t (a weighted buffer
+    of the graph): one polygon around each connected component, its outer
+    ring the wavefront (counter-clockwise), holes (clockwise) where a
+    bounded face's wavefront is still closed; t = 0 gives no polygon.  t: a
+    number or a sequence (one skeleton for all), as in offset().  Without
+    until, a t past the default horizon makes the skeleton be followed up
+    to the largest t instead (as the CLI's --offset); a t past a given
+    until raises UnsupportedError (the skeleton is not known there)."""
+    times = np.atleast_1d(np.asarray(t, dtype=np.float64))
+    if times.ndim != 1:
+        raise UsageError("t must be a number or a sequence of numbers", status="usage")
+    u = _until_arg(until)
+    latest = float(times.max()) if times.size else 0.0
+    for attempt in (0, 1):
+        with _Run() as h:
+            _solve_pslg(h, points, edges, weights, u, variant, check, name)
+            horizon = ctypes.c_double()
+            z = ctypes.c_uint32()
+            _pslg_sizes(h, ctypes.byref(horizon), ctypes.byref(z), ctypes.byref(z),
+                        ctypes.byref(z))
+            if latest > horizon.value and until is None and attempt == 0:
+                u = latest  # past the default horizon: follow it up to the latest t
+                continue
+            out = []
+            for ti in times:
+                if until is not None and ti > u:
+                    raise UnsupportedError(
+                        "offset time %g is beyond the horizon until=%g up to which the PSLG's "
+                        "skeleton is computed: raise until or leave it out" % (ti, u),
+                        name, status="unsupported")
+                if _c_offset(h, float(ti)) != 0:
+                    _raise(h)
+                out.append(_read_offset(h))
+            break
+    return out if np.ndim(t) else out[0]
+
+
+PslgRoof = collections.namedtuple("PslgRoof", "vertices faces n_edge_faces horizon")
+PslgRoof.__doc__ = """The roof over the region a PSLG's wavefront has swept by its horizon
+T, as the CLI's OBJ: vertices an (N, 3) array (x, y, z = t), the skeleton's
+nodes; faces[i] for i < n_edge_faces the face of stored edge i (a side of a
+segment, or a cap) on its edge's plane, the later ones at z = T closing the
+bounded faces whose wavefront is still alive at T (counter-clockwise); each
+face an array of vertex ids (a face with an island is one weakly simple
+cycle, the island bridged in)."""
+
+
+def pslg_roof(points, edges, weights=None, until=None, variant="naive", check=True,
+              name="<python>"):
+    """The roof of a PSLG's skeleton up to its horizon (see PslgRoof).  A
+    horizon at which a bounded face's wavefront still encloses another
+    component raises UnsupportedError (the cap face would have a hole):
+    a larger until helps."""
+    with _Run() as h:
+        _solve_pslg(h, points, edges, weights, _until_arg(until), variant, check, name)
+        if _c_roof(h) != 0:
+            _raise(h)
+        sk = _read_pslg_skeleton(h)
+        nf = _roof_faces(h)
+        starts = np.zeros(nf + 1, dtype=np.uint32)
+        ids = np.zeros(_roof_size(h), dtype=np.uint32)
+        _roof_copy(h, starts.ctypes.data_as(_u32p), ids.ctypes.data_as(_u32p))
+    verts = np.column_stack([sk.nodes["x"], sk.nodes["y"], sk.nodes["t"]])
+    return PslgRoof(verts, [ids[starts[i]:starts[i + 1]].copy() for i in range(nf)], sk.n,
+                    sk.horizon)
+
+
+def read_graphml(path):
+    """A GraphML graph as (points, edges, weights) for pslg_skeleton: nodes
+    with the data keys named vertex-coordinate-x and vertex-coordinate-y,
+    edges with edge-weight (its key's default, else 1), both in document
+    order, edges as node index pairs.  A plain reader for the Salzburg /
+    surfer2 layout (README "Input formats"); the C reader's checks (valid
+    numbers aside) happen in pslg_skeleton.  Raises InputError naming the
+    file on a missing key, node or coordinate."""
+    import xml.etree.ElementTree as ET
+    try:
+        root = ET.parse(path).getroot()
+    except (ET.ParseError, OSError) as ex:
+        raise InputError("cannot read GraphML: %s" % ex, str(path), status="input")
+
+    def local(tag):
+        return tag.rsplit("}", 1)[-1]
+    keys, default_w = {}, 1.0
+    for k in root.iter():
+        if local(k.tag) == "key":
+            keys[k.get("id")] = k.get("attr.name")
+            if k.get("attr.name") == "edge-weight":
+                for d in k:
+                    if local(d.tag) == "default" and (d.text or "").strip():
+                        default_w = float(d.text)
+    ids, pts, edges, weights = {}, [], [], []
+
+    def data(el):
+        return {keys.get(d.get("key")): (d.text or "").strip() for d in el
+                if local(d.tag) == "data"}
+    for el in root.iter():
+        if local(el.tag) == "node":
+            d = data(el)
+            try:
+                pts.append((float(d["vertex-coordinate-x"]), float(d["vertex-coordinate-y"])))
+            except (KeyError, ValueError):
+                raise InputError("node %r: no valid vertex-coordinate-x/y" % el.get("id"),
+                                 str(path), status="input")
+            ids[el.get("id")] = len(pts) - 1
+    for el in root.iter():
+        if local(el.tag) == "edge":
+            a, b = el.get("source"), el.get("target")
+            if a not in ids or b not in ids:
+                raise InputError("edge %d: unknown node %r" % (len(edges), a if a not in ids else b),
+                                 str(path), status="input")
+            edges.append((ids[a], ids[b]))
+            w = data(el).get("edge-weight")
+            weights.append(float(w) if w else default_w)
+    return (np.array(pts, dtype=np.float64).reshape(-1, 2),
+            np.array(edges, dtype=np.int64).reshape(-1, 2), np.array(weights, dtype=np.float64))

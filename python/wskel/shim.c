@@ -9,9 +9,15 @@
 **
 **   h = wks_new()                         one handle = one wk_run
 **   wks_solve(h, rings, x, y, w, ...)     polygon + skeleton, kept in h
+**   wks_solve_pslg(h, nv, x, y, ne, ...)  the same for a PSLG (nodes and
+**                                         edges), up to a time horizon;
+**   wks_pslg_sizes / wks_pslg_copy        its horizon, rings, corners' nodes
+**                                         and stored edges' input edges
 **   wks_nodes / wks_arcs / wks_counter_*  copy results into caller arrays
 **   wks_offset(h, t) + wks_offset_copy    the wavefront at time t
-**   wks_roof(h) + wks_roof_copy           one face cycle per input edge
+**   wks_roof(h) + wks_roof_copy           one face cycle per input edge (a
+**                                         PSLG: per stored edge, then the
+**                                         cap's faces at the horizon)
 **   wks_error_*                           h's first failure (R->err)
 **   wks_close(h)                          frees everything; returns the
 **                                         run's live bytes (0 = no leak)
@@ -19,7 +25,10 @@
 ** Numbering: everything handed out uses input numbering (as the writers
 ** do): node i < n is input vertex i (the i-th point of the concatenated
 ** rings), arcs name nodes by wk_polygon_output_node and faces by
-** wk_polygon_input_edge, face cycles list output node ids.
+** wk_polygon_input_edge, face cycles list output node ids.  A PSLG's output
+** numbering is its stored numbering (engine/pslg.c): nodes i < n are the
+** corners of its initial wavefront, edges its half-edges and caps; an arc
+** of the cap (the wavefront at the horizon) has WK_NONE on its left.
 **
 ** Memory: every object of the computation goes through the run's counting
 ** allocator; the handle itself (which holds the run) is the one block from
@@ -29,6 +38,9 @@
 #include <string.h>
 
 #include "wskel.h"
+/* engine-private, for wk_capped_faces_build: a PSLG's roof is the same list
+** of faces that the OBJ writer writes (its edges' faces, then the cap's). */
+#include "write.h"
 
 typedef struct wks_handle {
     wk_run R;
@@ -37,9 +49,10 @@ typedef struct wks_handle {
     wk_polygon *P;
     wk_skeleton *S;
     wk_offset_set *O;     /* the last wks_offset's, freed by the next or by close */
-    uint32_t *face_start; /* roof: P->n + 1 offsets into face_node */
+    uint32_t *face_start; /* roof: n_faces + 1 offsets into face_node */
     uint32_t *face_node;
     uint32_t n_face_node;
+    uint32_t n_faces;     /* roof faces: P->n, a PSLG's P->n + its cap faces */
     double time_s;
     size_t peak_bytes;
 } wks_handle;
@@ -68,8 +81,9 @@ uint64_t wks_alloc_requests(const wks_handle *h) { return h->dbg.requests; }
 
 static void free_roof(wks_handle *h) {
     if (h->face_node) WK_FREE_ARRAY(&h->R, h->face_node, h->n_face_node);
-    if (h->face_start) WK_FREE_ARRAY(&h->R, h->face_start, h->P->n + 1);
-    h->n_face_node = 0;
+    if (h->face_start) WK_FREE_ARRAY(&h->R, h->face_start, h->n_faces + 1);
+    h->face_node = h->face_start = NULL;
+    h->n_face_node = h->n_faces = 0;
 }
 
 size_t wks_close(wks_handle *h) {
@@ -114,6 +128,60 @@ int wks_solve(wks_handle *h, uint32_t n_rings, const uint32_t *ring_size, const 
     return wk_solve(R, h->V, h->P, &h->S, &h->time_s, &h->peak_bytes);
 }
 
+/* A PSLG: nv nodes (x, y), ne edges src[i] - dst[i] of weight w[i] (w NULL:
+** unit weights), built by wk_pslg_from_arrays (the GraphML reader's path:
+** nodes and edges in document order give the CLI's skeleton), solved up
+** to the horizon until (0: the default horizon, engine/pslg.c) with the
+** named variant; a variant without WK_VARIANT_PSLG is refused by wk_solve
+** (WK_EUNSUPPORTED).  check as for wks_solve (the PSLG validator). */
+int wks_solve_pslg(wks_handle *h, uint32_t nv, const double *x, const double *y, uint32_t ne,
+                   const uint32_t *src, const uint32_t *dst, const double *w, const char *name,
+                   const char *variant, double until, int threads, int check) {
+    wk_run *R = &h->R;
+    if (h->P) return WK_FAIL(R, WK_EUSAGE, "", 0, "wks_solve_pslg called twice on one handle");
+    h->V = wk_variant_find(variant);
+    if (!h->V) return WK_FAIL(R, WK_EUSAGE, "", 0, "unknown variant '%s'", variant);
+    if (!(until >= 0)) /* NaN too */
+        return WK_FAIL(R, WK_EUSAGE, "", 0, "until must be a positive number (got %g)", until);
+    R->opt.until = until;
+    if (threads > 0) R->opt.threads = threads;
+    wk_status st = wk_pslg_from_arrays(R, nv, x, y, ne, src, dst, w, name, NULL, NULL, &h->P);
+    if (st != WK_OK) return st;
+    if (!(wk_variant_flags(h->V) & WK_VARIANT_WEIGHTS))
+        for (uint32_t i = 0; i < h->P->n; i++) /* a cap has its segment's weight */
+            if (h->P->w[i] != 1.0 && h->P->edge_of[i] != WK_NONE)
+                return WK_FAIL(R, WK_EUNSUPPORTED, h->P->name, 0,
+                               "variant %s supports unit weights only (edge %u has weight %g)",
+                               wk_variant_name(h->V), h->P->edge_of[i], h->P->w[i]);
+    if (check)
+        return wk_solve_checked(R, h->V, h->P, WK_VALIDATE_TOL_REL * wk_polygon_scale(h->P), &h->S,
+                                &h->time_s, &h->peak_bytes, NULL);
+    return wk_solve(R, h->V, h->P, &h->S, &h->time_s, &h->peak_bytes);
+}
+
+/* A solved PSLG's horizon and sizes: rings (face cycles of the initial
+** wavefront), graph nodes and edges.  Zeros for a polygon. */
+void wks_pslg_sizes(const wks_handle *h, double *horizon, uint32_t *n_rings, uint32_t *n_graph_nodes,
+                    uint32_t *n_graph_edges) {
+    bool pslg = h->P && h->P->pslg;
+    *horizon = pslg && h->S ? h->S->horizon : 0;
+    *n_rings = pslg ? h->P->n_rings : 0;
+    *n_graph_nodes = pslg ? h->P->n_graph_vertices : 0;
+    *n_graph_edges = pslg ? h->P->n_graph_edges : 0;
+}
+
+/* ring_size: n_rings; corner_node, edge_of: wks_n_input each (the input
+** node of each corner; the input edge of each stored edge, WK_NONE for a
+** cap), as the JSON's "rings" and "pslg" members. */
+void wks_pslg_copy(const wks_handle *h, uint32_t *ring_size, uint32_t *corner_node,
+                   uint32_t *edge_of) {
+    const wk_polygon *P = h->P;
+    if (!P || !P->pslg) return;
+    for (uint32_t k = 0; k < P->n_rings; k++) ring_size[k] = P->ring_start[k + 1] - P->ring_start[k];
+    memcpy(corner_node, P->corner_vertex, P->n * sizeof *corner_node);
+    memcpy(edge_of, P->edge_of, P->n * sizeof *edge_of);
+}
+
 uint32_t wks_n_input(const wks_handle *h) { return h->P ? h->P->n : 0; }
 uint32_t wks_n_nodes(const wks_handle *h) { return h->S ? h->S->n_nodes : 0; }
 uint32_t wks_n_arcs(const wks_handle *h) { return h->S ? h->S->n_arcs : 0; }
@@ -132,6 +200,11 @@ void wks_nodes(const wks_handle *h, double *xyt) {
     }
 }
 
+/* An arc's face in output numbering; the cap (WK_NONE) stays WK_NONE. */
+static uint32_t out_face(const wk_polygon *P, uint32_t e) {
+    return e == WK_NONE ? WK_NONE : wk_polygon_input_edge(P, e);
+}
+
 /* ablr: 4 * wks_n_arcs ids (a, b, left, right per arc, in arc order). */
 void wks_arcs(const wks_handle *h, uint32_t *ablr) {
     const wk_skeleton *S = h->S;
@@ -139,8 +212,8 @@ void wks_arcs(const wks_handle *h, uint32_t *ablr) {
         const wk_arc *c = &S->arcs[i];
         ablr[4 * i] = wk_polygon_output_node(h->P, c->a);
         ablr[4 * i + 1] = wk_polygon_output_node(h->P, c->b);
-        ablr[4 * i + 2] = wk_polygon_input_edge(h->P, c->left);
-        ablr[4 * i + 3] = wk_polygon_input_edge(h->P, c->right);
+        ablr[4 * i + 2] = out_face(h->P, c->left);
+        ablr[4 * i + 3] = out_face(h->P, c->right);
     }
 }
 
@@ -187,16 +260,49 @@ void wks_offset_copy(const wks_handle *h, uint32_t *polygon_start, uint32_t *rin
 
 /* ------------------------------------------------------------------- roof */
 
+/* A PSLG's roof: the faces of wk_capped_faces_build, as the OBJ writer
+** writes them (stored edge order = output order, then the cap's faces). */
+static int pslg_roof(wks_handle *h) {
+    wk_run *R = &h->R;
+    const wk_polygon *P = h->P;
+    uint32_t *edge_of = NULL;
+    wk_capped_faces CF;
+    memset(&CF, 0, sizeof CF);
+    wk_status st = wk_input_order(R, P, NULL, &edge_of);
+    if (st == WK_OK) st = wk_capped_faces_build(R, P, h->S, edge_of, &CF, "roof: ");
+    if (st == WK_OK) {
+        h->face_start = WK_NEW_ARRAY(R, uint32_t, CF.n_faces + 1);
+        if (h->face_start) h->n_faces = CF.n_faces; /* free_roof frees by it */
+        h->face_node = CF.n_node ? WK_NEW_ARRAY(R, uint32_t, CF.n_node) : NULL;
+        if (h->face_node) h->n_face_node = CF.n_node;
+        if (!h->face_start || (CF.n_node && !h->face_node)) {
+            st = WK_ENOMEM;
+        } else {
+            h->face_start[0] = 0;
+            for (uint32_t f = 0; f < CF.n_faces; f++) h->face_start[f + 1] = CF.end[f];
+            for (uint32_t i = 0; i < CF.n_node; i++)
+                h->face_node[i] = wk_polygon_output_node(P, CF.node[i]);
+        }
+    }
+    wk_capped_faces_clear(R, &CF);
+    if (edge_of) WK_FREE_ARRAY(R, edge_of, P->n);
+    if (st != WK_OK) free_roof(h);
+    return st;
+}
+
 /* The roof: the face of every input edge as a cycle of output node ids
-** (wk_face_cycle), face i of input edge i; the nodes' t is the height. */
+** (wk_face_cycle), face i of input edge i; the nodes' t is the height.  A
+** PSLG: pslg_roof. */
 int wks_roof(wks_handle *h) {
     wk_run *R = &h->R;
     if (!h->S) return WK_FAIL(R, WK_EUSAGE, "", 0, "wks_roof before a successful wks_solve");
     free_roof(h);
+    if (h->P->pslg) return pslg_roof(h);
     const wk_polygon *P = h->P;
     uint32_t cap = 0;
     h->face_start = WK_NEW_ARRAY(R, uint32_t, P->n + 1);
     if (!h->face_start) return WK_ENOMEM;
+    h->n_faces = P->n;
     /* Two passes would solve every face twice; instead collect stored faces
     ** in stored order, then place them by input edge through a permutation. */
     uint32_t *len = WK_NEW_ARRAY(R, uint32_t, P->n), *stored_of = WK_NEW_ARRAY(R, uint32_t, P->n);
@@ -241,10 +347,11 @@ int wks_roof(wks_handle *h) {
 }
 
 uint32_t wks_roof_size(const wks_handle *h) { return h->n_face_node; }
-/* face_start: wks_n_input + 1 offsets, node: wks_roof_size ids. */
+uint32_t wks_roof_faces(const wks_handle *h) { return h->n_faces; }
+/* face_start: wks_roof_faces + 1 offsets, node: wks_roof_size ids. */
 void wks_roof_copy(const wks_handle *h, uint32_t *face_start, uint32_t *node) {
-    memcpy(face_start, h->face_start, (h->P->n + 1) * sizeof *face_start);
-    memcpy(node, h->face_node, h->n_face_node * sizeof *node);
+    memcpy(face_start, h->face_start, (h->n_faces + 1) * sizeof *face_start);
+    if (h->n_face_node) memcpy(node, h->face_node, h->n_face_node * sizeof *node);
 }
 
 /* ----------------------------------------------------------------- errors */
