@@ -1,6 +1,7 @@
 # bench.mk: the benchmark targets (included at the end of the Makefile).
 #   make bench     default sweep -> results/latest/ (CSV, plots, fit, REPORT.md)
-#   make curves    the larger sweeps (curves, curves_k, curves_large) -> results/curves/
+#   make curves    the larger sweeps (curves, curves_monotone, curves_k, curves_large)
+#                  -> results/curves/
 #   make regress   fixed sweep, compared with results/baseline/regress.csv
 #   make regress-baseline   re-measure the baseline (commit the result)
 #   make test-bench         the harness's own tests
@@ -23,6 +24,7 @@ bench: $(BENCH_DEPS)
 curves: $(BENCH_DEPS)
 	@mkdir -p results/curves/plots
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
+	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves_monotone.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves_k.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
 	$(BENCH_ENV) $(BENCH) --spec bench/sweeps/curves_large.spec --resume $(BENCH_FLAGS) --out results/curves/curves.csv
 	$(PY) scripts/fit.py results/curves/curves.csv --json results/curves/fit.json > results/curves/fit.txt && cat results/curves/fit.txt

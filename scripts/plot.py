@@ -15,6 +15,11 @@ colour in every panel, the legend outside the panel so it covers no data.
                      colour, with its median share of the time in the
                      legend (phase_s of the CSV's JSON-lines twin, when it
                      is there and has it);
+    phase_share      a timed phase's share of the construction time
+                     (phase_s / wall_s: the motorcycle variant's M(P))
+                     against n, log n by linear percent, one panel per
+                     variant with a phase, one line per family and weight
+                     mode (median over seeds and repeats);
     memory_vs_n      peak tracked bytes (solid) and peak RSS (dotted)
                      against n, the same panels;
     k_effect         per family: time against k (top) and peak tracked
@@ -54,9 +59,10 @@ MAX_LINES = 6       # data series per panel: more are not told apart at a glance
 NCOLS = 3           # panels per figure row
 PANEL = (4.4, 3.3)  # inches per panel (its data area and labels)
 LEGEND_W = 2.3      # inches beside each panel for its legend
-MARKERS = {"naive": "o", "cgal": "s", "arrangement": "^", "monotone": "v", "motorcycle": "D"}
+MARKERS = {"naive": "o", "cgal": "s", "arrangement": "^", "monotone": "v", "motorcycle": "D",
+           "deforming": "P"}
 STYLES = {"cgal": ":"}
-VARIANT_ORDER = ["naive", "monotone", "arrangement", "motorcycle", "cgal"]
+VARIANT_ORDER = ["naive", "monotone", "arrangement", "motorcycle", "deforming", "cgal"]
 
 
 def save(fig, outdir, name, written):
@@ -246,6 +252,52 @@ def plot_time_vs_n(rows, outdir, written, fits):
     fig.suptitle("Construction time against n, one panel per family (median over seeds)",
                  fontsize=11)
     save(fig, outdir, "time_vs_n", written)
+
+
+def phase_shares(rows):
+    """{(variant, phase): {(family, weights): {n: (median share, median
+    phase_s, median wall_s)}}} over the rows with a phase time (largest k
+    per variant, as time_vs_n).  Shared with report.py's table."""
+    out = {}
+    with_phase = [r for r in rows if r.get("phase_s") is not None and r["wall_s"]]
+    for (var, fam, w), rs in sorted(group_by(with_phase, ("variant", "family", "weights")).items()):
+        lr = largest_k(rs)
+        share = median_by(lr, lambda r: r["n"], lambda r: r["phase_s"] / r["wall_s"])
+        ph = median_by(lr, lambda r: r["n"], lambda r: r["phase_s"])
+        wall = median_by(lr, lambda r: r["n"], lambda r: r["wall_s"])
+        out.setdefault((var, lr[0]["phase"]), {})[(fam, w)] = {
+            n: (share[n], ph[n], wall[n]) for n in sorted(share)}
+    return out
+
+
+def plot_phase_share(rows, outdir, written):
+    shares = phase_shares(rows)
+    if not shares:
+        return "phase_share: skipped (no phase times)"
+    colors = family_colors(rows)
+    slots = [(key, ch) for key in sorted(shares) for ch in split(sorted(shares[key]))]
+    fig, axes = panels(len(slots))
+    for ((var, phase), series), (ax,) in zip(slots, axes):
+        for fam, w in series:
+            pts = shares[(var, phase)][(fam, w)]
+            ns = sorted(pts)
+            ax.plot(ns, [100 * pts[n][0] for n in ns], marker=MARKERS.get(var, "d"),
+                    color=colors[fam], markersize=4,
+                    label="%s, %s (%.0f..%.0f%%)" % (fam, w, 100 * min(p[0] for p in pts.values()),
+                                                      100 * max(p[0] for p in pts.values())))
+        ax.set_xscale("log")
+        plain_ticks(ax.xaxis)
+        ax.set_ylim(0, 100)
+        ax.set_xlabel("n (vertices)", fontsize=8)
+        ax.set_ylabel("%s time / construction time (%%)" % phase, fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.set_title("%s: share of %s" % (var, phase), fontsize=9)
+        legend_beside(ax)
+    fig.suptitle("A variant's timed phase as a share of its construction time against n "
+                 "(median over seeds)", fontsize=11)
+    save(fig, outdir, "phase_share", written)
+    return None
 
 
 def plot_memory_vs_n(rows, outdir, written):
@@ -455,7 +507,7 @@ def main():
                      "phase curves")
     plot_time_vs_n(ok, args.outdir, written, fits)
     plot_memory_vs_n(ok, args.outdir, written)
-    for f in (plot_k, plot_events):
+    for f in (plot_phase_share, plot_k, plot_events):
         note = f(ok, args.outdir, written)
         if note:
             notes.append(note)

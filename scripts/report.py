@@ -20,6 +20,8 @@ from results import cell, config_key, group_by, k_order, load_csv, loglog_slope 
 FIGURES = [
     ("time_vs_n", "Construction time against n, one panel per family (log-log; slope in "
      "the legend, dashed: the NNLS model of fit.py)"),
+    ("phase_share", "A timed phase's share of the construction time against n (the motorcycle "
+     "variant's M(P)), one line per family"),
     ("memory_vs_n", "Peak tracked bytes (solid) and peak RSS (dotted) against n, one panel "
      "per family"),
     ("k_effect", "The k tradeoff per family: time and peak memory against k at fixed n and r"),
@@ -80,6 +82,31 @@ def k_sweeps(rows):
     return out
 
 
+def phase_tables(csv_path, rows):
+    """Markdown lines: per variant with a timed phase (the motorcycle
+    variant's M(P); phase_s of the CSV's JSON-lines twin), the phase's time,
+    the construction time and the share, per family and n (medians over
+    seeds and repeats, as plot.py's phase_share)."""
+    import plot  # noqa: E402  (matplotlib; only when the report has phase times)
+    ok = [r for r in rows if r["status"] == "ok" and r["wall_s"] is not None and r["wall_s"] > 0]
+    if not plot.attach_phases(csv_path, ok):
+        return []
+    out = []
+    for (var, phase), fams in sorted(plot.phase_shares(ok).items()):
+        out.append("**%s**: %s time, construction time and %s's share of it (wall clock; "
+                   "median over seeds)" % (var, phase, phase))
+        out.append("")
+        out.append("| family | weights | n | %s (s) | construction (s) | share |" % phase)
+        out.append("|---|---|---|---|---|---|")
+        for (fam, w), pts in sorted(fams.items()):
+            for n in sorted(pts):
+                share, ph, wall = pts[n]
+                out.append("| %s | %s | %d | %.4g | %.4g | %.0f%% |" % (fam, w, n, ph, wall,
+                                                                         100 * share))
+        out.append("")
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("csv")
@@ -130,6 +157,11 @@ def main():
                  "The naive reference variant has no arrangement, so its r^3/k term only says "
                  "that its time grows like a power of r between 2 and 3 on these families.")
     lines.append("")
+    pt = phase_tables(args.csv, rows)
+    if pt:
+        lines.append("## Timed phases")
+        lines.append("")
+        lines.extend(pt)
     ks = k_sweeps(rows)
     if ks:
         lines.append("## k sweeps")

@@ -255,6 +255,20 @@ assert m[0]["phase"] == "M(P)" and 0 < m[0]["phase_s"] <= m[0]["wall_s"], m[0]
 assert nv[0]["phase"] is None and nv[0]["phase_s"] is None, nv[0]
 EOF'
 check "phase: the CSV has no phase column" '! grep -v "^#" $T/phase.csv | head -1 | grep -q phase'
+$PY scripts/plot.py "$T/phase.csv" "$T/phase_plots" > "$T/phase_plot.out" 2>&1
+check "phase: plot.py draws phase_share (the timed phase's share against n)" \
+    '[ -s $T/phase_plots/phase_share.png ] && grep -q "wrote .*phase_share.svg" $T/phase_plot.out'
+$PY scripts/report.py "$T/phase.csv" "$T/phase_plots" "$T/phase.md" > /dev/null 2>&1
+check "phase: report.py tabulates M(P)'s time and share (phase_s / wall_s of the JSON line)" \
+    '$PY - $T/phase.jsonl $T/phase.md <<EOF
+import json, sys
+m = [json.loads(l) for l in open(sys.argv[1]) if json.loads(l)["variant"] == "motorcycle"][0]
+want = "| star | unit | 300 | %.4g | %.4g | %.0f%% |" % (m["phase_s"], m["wall_s"],
+                                                     100 * m["phase_s"] / m["wall_s"])
+text = open(sys.argv[2]).read()
+assert "## Timed phases" in text and want in text.splitlines(), want
+assert "plots/phase_share.png" in text or "phase_share.png" in text
+EOF'
 
 # ---- 6. the qsort() reference
 positive() { $PY -c 'import sys; v = float(sys.argv[1]); sys.exit(0 if 0 < v < 100 else 1)' "$1" 2>/dev/null; }
