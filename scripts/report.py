@@ -58,9 +58,9 @@ def k_sweeps(rows):
             else:
                 break
 
-        def slope_upto(kk):
-            pts = [r for r in numeric if int(r["k"]) <= kk]
-            s = loglog_slope([int(r["k"]) for r in pts], [r["wall_s"] for r in pts])
+        def slope_upto(kk, col="wall_s"):
+            pts = [r for r in numeric if int(r["k"]) <= kk and r.get(col)]
+            s = loglog_slope([int(r["k"]) for r in pts], [r[col] for r in pts])
             return "n/a" if math.isnan(s) else "%.3f" % s
         x0 = rs[0]
         out.append("**%s, %s n=%s r=%s %s seed %s** (%s crossings at t = 0): slope of log "
@@ -71,13 +71,18 @@ def k_sweeps(rows):
                     cell(x0.get("crossings")) or "?", slope_upto(kmax), kmax, floor,
                     slope_upto(8)))
         out.append("")
-        out.append("| k | time (s) | peak tracked (MB) | start events |")
-        out.append("|---|---|---|---|")
+        out.append("In CPU time (cpu_s, steadier than wall time on a loaded machine): %s over "
+                   "k = 1..4, %s over k = 1..8." % (slope_upto(4, "cpu_s"), slope_upto(8, "cpu_s")))
+        out.append("")
+        out.append("| k | time (s) | CPU (s) | peak tracked (MB) | start events |")
+        out.append("|---|---|---|---|---|")
         for x in rs:
             mb = x["peak_tracked_bytes"]
+            cpu = x.get("cpu_s")
             # An empty cell stays empty: the variant does not count start events.
-            out.append("| %s | %.3f | %s | %s |" % (x["k"], x["wall_s"],
-                       "" if mb is None else "%.2f" % (mb / 1e6), cell(x.get("start_events"))))
+            out.append("| %s | %.3f | %s | %s | %s |" % (
+                x["k"], x["wall_s"], "" if cpu is None else "%.3f" % cpu,
+                "" if mb is None else "%.2f" % (mb / 1e6), cell(x.get("start_events"))))
         out.append("")
     return out
 
@@ -126,6 +131,15 @@ def main():
         if c.split(":")[0] in ("date", "cpu", "cores", "memory", "compiler", "cflags", "git",
                                "generator version", "command", "limits"):
             lines.append("- " + c)
+    load = [r["wall_s"] / r["cpu_s"] for r in rows
+            if r["status"] == "ok" and r["variant"] != "cgal" and r.get("cpu_s")
+            and r["wall_s"] and r["cpu_s"] >= 0.5]
+    if load:
+        load.sort()
+        lines.append("- wall time / CPU time of the runs of at least 0.5 s CPU: median %.2f "
+                     "(%.2f..%.2f, %d runs; about 1 on an idle machine for these single-threaded "
+                     "runs, more when other work shares the cores: wall times are then inflated "
+                     "by about that factor)" % (load[len(load) // 2], load[0], load[-1], len(load)))
     lines.append("")
     lines.append("## Statuses")
     lines.append("")
