@@ -618,6 +618,13 @@ left and right swapped	3	validate (e):	a=S['arcs'][20]; a[2],a[3]=a[3],a[2]
 vertex count of another polygon	1	this polygon has 25	S['n']=24
 no arcs array	1	not a wskel-1 skeleton	del S['arcs']
 EOF
+# a roof cut at a height: valid with --height, not without (a cap is no face)
+run "$WSKEL" --variant deforming --height 0.3 -o "$TMP/cut.json" "$SQUARE"
+expect "deforming --height 0.3 writes a cut roof" 0
+run "$WSKEL" --validate "$TMP/cut.json" --height 0.3 "$SQUARE"
+expect "--validate --height: the cut roof is valid" 0
+run "$WSKEL" --validate "$TMP/cut.json" "$SQUARE"
+expect "--validate without --height: the cap is refused" 3 "validate (c)"
 if [ "$mutants" -ge 10 ]; then pass "$mutants mutants tried"
 else fail "mutants tried" "only $mutants"; fi
 
