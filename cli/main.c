@@ -55,6 +55,11 @@ static const char usage_text[] =
     "  --check            validate the skeleton, exit 3 and no output if invalid\n"
     "                     (the default; --stats prints the validator's figures)\n"
     "  --no-check         skip the validation (huge inputs, timing runs)\n"
+    "  --validate SKEL    validate the wskel-1 JSON skeleton SKEL (written by -o,\n"
+    "                     any variant or program) against INPUT instead of\n"
+    "                     computing one: exit 0 and 'valid: ...' on stdout, or 3\n"
+    "                     and the violated property (polygons, not PSLGs; with\n"
+    "                     --height H for a roof cut at H)\n"
     "  --check-tol REL    the validator's tolerance as a fraction of the bounding-box\n"
     "                     diagonal (default 1e-6; smaller is stricter)\n"
     "  --stats            print counters, time and peak tracked bytes to stderr\n"
@@ -131,9 +136,26 @@ static int parse_offsets(const char *s, double **out, uint32_t *n) {
     return 0;
 }
 
+/* --validate: read SKEL against P and run the validator on it. */
+static int validate_file(wk_run *R, const wk_polygon *P, const char *path, double check_tol,
+                         bool verbose) {
+    wk_skeleton *S = NULL;
+    wk_validate_report rep;
+    if (wk_skeleton_read_json(R, P, path, &S) != WK_OK ||
+        wk_validate(R, P, S, check_tol * wk_polygon_scale(P), &rep) != WK_OK) {
+        wk_skeleton_free(R, S);
+        return report(R, verbose);
+    }
+    printf("valid: %s against %s (%u nodes, %u arcs, %u faces, max distance error %.3g, area "
+           "error %.3g)\n",
+           path, P->name, rep.nodes, rep.arcs, rep.faces, rep.max_distance_error, rep.area_error);
+    wk_skeleton_free(R, S);
+    return 0;
+}
+
 int main(int argc, char **argv) {
     const char *variant = "naive", *format = "json", *outpath = NULL, *input = NULL;
-    const char *offsets_arg = NULL;
+    const char *offsets_arg = NULL, *validate_path = NULL;
     bool check = true, stats = false, k_given = false, verbose = false, list_counters = false;
     bool check_invariants = false;
     double check_tol = WK_VALIDATE_TOL_REL;
@@ -199,6 +221,9 @@ int main(int argc, char **argv) {
             offsets_arg = argv[++i];
         } else if (!strcmp(a, "--check")) {
             check = true;
+        } else if (!strcmp(a, "--validate")) {
+            NEED_ARG();
+            validate_path = argv[++i];
         } else if (!strcmp(a, "--no-check")) {
             check = false;
         } else if (!strcmp(a, "--check-tol")) {
@@ -302,6 +327,7 @@ int main(int argc, char **argv) {
     /* weights <= 0 are input only for a variant that takes them: the
     ** readers refuse them otherwise, naming the edge */
     R.opt.nonpositive_weights = (wk_variant_flags(V) & WK_VARIANT_NONPOSITIVE_WEIGHTS) != 0;
+    if (validate_path) R.opt.nonpositive_weights = true; /* the skeleton says what it is */
     if (height > 0 && !R.opt.nonpositive_weights)
         return usage_error("variant %s does not take --height (deforming does)", wk_variant_name(V));
     R.opt.check_invariants = check_invariants;
@@ -318,6 +344,10 @@ int main(int argc, char **argv) {
 
     if (wk_polygon_read_file(&R, input, &P) != WK_OK) {
         rc = report(&R, verbose);
+        goto done;
+    }
+    if (validate_path) {
+        rc = validate_file(&R, P, validate_path, check_tol, verbose);
         goto done;
     }
     if (until > 0 && !P->pslg)

@@ -72,6 +72,24 @@
 ** search over all arcs with a uniform grid stops being near-linear as soon
 ** as many long arcs run close together (a star with 10^5 thin spikes).
 **
+** What this does not prove, and checks left out on purpose.  (c), (e) and
+** (f) make S a roof of P within tol: faces tiling P, each on its edge's
+** plane z = d_e / w(e), continuous across every arc.  The straight skeleton
+** is one such roof, the one the wavefront defines; nothing checked at the
+** tolerance tells it from another roof within tol of it, and the straight
+** skeleton is discontinuous in P where two events coincide (two reflex
+** wavefront vertices meeting): polygons 1e-5 apart can have skeletons units
+** apart, each passing for the other polygon (README, "The validator";
+** tests/data/skeletons).  Implied, so not checked separately: (i) the roof
+** never above the weighted distance, t_v <= dist(v, boundary) / w_min: a
+** roof as above has gradient 1 / w(e) on face e, so along the segment from
+** v to its nearest boundary point (inside P, height 0 there) it rises at
+** most 1 / w_min per unit.  With each edge's own weight, t_v <=
+** dist(v, e) / w(e), it is false for unequal weights: beyond the end of a
+** heavy edge e at a reflex vertex, points are swept by the light edge f
+** there, at dist / w(f) > dist / w(e).  (ii) Face completeness: (c), (e),
+** (f).
+**
 ** (b) uses a uniform grid over the polygon's edges (about two edges per
 ** cell).  Each cell gets a reference point that is not on the boundary and
 ** whose inside/outside status is propagated along its row from a point

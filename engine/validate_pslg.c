@@ -16,7 +16,9 @@
 **       |d_e(v) - w(e) t_v| <= tol, d_e the signed distance from e's
 **       supporting line (a cap's: through its terminal, perpendicular to
 **       the segment), positive on the side e sweeps; a cap arc has both
-**       ends at t = T (within tol_t).
+**       ends at t = T (within tol_t).  At most one arc at a corner leaves
+**       it for a node later than t ~ 0 (tol_t): one wavefront vertex starts
+**       at each corner (the argument is above the check).
 **   (d) faces: for every edge e, the darts of face e (edge e from corner e
 **       to corner next(e); each arc with e on its left a -> b, with e on
 **       its right b -> a) form closed loops: every node of them has one
@@ -240,20 +242,51 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                            i, v->x, v->y, v->t, T);
     }
     /* (c) */
+    uint32_t *leaving = WK_NEW_ARRAY(R, uint32_t, P->n); /* arcs leaving each corner */
+    if (!leaving) return R->err.code;
     for (uint32_t i = 0; i < S->n_arcs; i++) {
         const wk_arc *c = &S->arcs[i];
+        wk_status bad_arc = WK_OK;
         if (c->a >= S->n_nodes || c->b >= S->n_nodes || c->a == c->b)
-            return WK_FAIL(R, WK_EINVALID, name, 0, "validate (pslg c): arc %u [%u, %u] has bad ends",
-                           i, c->a, c->b);
-        if (c->left == c->right || c->right >= P->n || (c->left >= P->n && c->left != WK_NONE))
-            return WK_FAIL(R, WK_EINVALID, name, 0,
-                           "validate (pslg c): arc %u has faces %u, %u (the cap, %u, only on the "
-                           "left)",
-                           i, c->left, c->right, WK_NONE);
-        if (wk_validate_arc_ends(R, P, S, i, T, tol, tol_t, name, "pslg c", "the horizon",
-                                 "offset line", rep) != WK_OK)
-            return R->err.code;
+            bad_arc = WK_FAIL(R, WK_EINVALID, name, 0,
+                              "validate (pslg c): arc %u [%u, %u] has bad ends", i, c->a, c->b);
+        else if (c->left == c->right || c->right >= P->n ||
+                 (c->left >= P->n && c->left != WK_NONE))
+            bad_arc = WK_FAIL(R, WK_EINVALID, name, 0,
+                              "validate (pslg c): arc %u has faces %u, %u (the cap, %u, only on "
+                              "the left)",
+                              i, c->left, c->right, WK_NONE);
+        else if (wk_validate_arc_ends(R, P, S, i, T, tol, tol_t, name, "pslg c", "the horizon",
+                                      "offset line", rep) != WK_OK)
+            bad_arc = R->err.code;
+        if (bad_arc != WK_OK) {
+            WK_FREE_ARRAY(R, leaving, P->n);
+            return bad_arc;
+        }
+        /* an arc at corner a whose other end b is later than t ~ 0 */
+        if (c->a < P->n && !(fabs(S->nodes[c->b].t) <= tol_t)) leaving[c->a]++;
+        if (c->b < P->n && !(fabs(S->nodes[c->a].t) <= tol_t)) leaving[c->b]++;
     }
+    /* One wavefront vertex starts at each corner, so at most one arc leaves
+    ** it for t > tol_t (the others, any number, run at t ~ 0: edges swept at
+    ** once by the collinear rule, sub-tolerance features).  Why: near the
+    ** corner, inside its wedge (the angle between its two edges, which no
+    ** other edge's face enters: the segments bounding the wedge separate
+    ** it from the other wedges at that point), the faces met going round
+    ** are the two edges' own and, by (c), faces of edges whose lines pass
+    ** through the corner at t ~ 0; a second arc leaving for t > tol_t would
+    ** be a second wavefront vertex, i.e. a face between the corner's two
+    ** that reaches beyond t ~ 0 (the same rule as validate.c's (d)). */
+    for (uint32_t v = 0; v < P->n; v++)
+        if (leaving[v] > 1) {
+            uint32_t count = leaving[v];
+            WK_FREE_ARRAY(R, leaving, P->n);
+            return WK_FAIL(R, WK_EINVALID, name, 0,
+                           "validate (pslg c): corner %u has %u arcs that leave it (to nodes later "
+                           "than t = %.3g); one wavefront vertex starts there",
+                           v, count, tol_t);
+        }
+    WK_FREE_ARRAY(R, leaving, P->n);
     /* (d) darts: faces 0..n-1, the cap as face n; used darts get face n + 1 */
     size_t m = 2 * (size_t)S->n_arcs + P->n;
     dart *d = WK_NEW_ARRAY(R, dart, m);

@@ -642,6 +642,14 @@ void wk_polygon_bbox(const wk_polygon *P, wk_point *lo, wk_point *hi);
 
 /* ------------------------------------------------------------ validator */
 
+/* Read a wskel-1 JSON skeleton (write_json.c's format, input numbering) of
+** polygon P from the file at path, into stored numbering, for wk_validate
+** (engine/skeleton_read.c).  Only decodes: the properties are the
+** validator's.  WK_EINPUT naming the file for what is no such skeleton of P
+** (see the file); *out NULL on failure, else freed with wk_skeleton_free. */
+wk_status wk_skeleton_read_json(wk_run *R, const wk_polygon *P, const char *path,
+                                wk_skeleton **out);
+
 typedef struct wk_validate_report {
     uint32_t nodes, arcs, faces;
     double max_distance_error; /* worst |dist(node, line e) - w(e) t| */

@@ -17,6 +17,9 @@
 #       other variants refuse (exit 2), --pslg; svg, obj, vtp and --offset
 #       (past the default horizon; past --until: refused), the refused roof
 #       (a cap face with a hole)
+#   (j) --validate SKEL.json POLY: the skeletons of tests/data/skeletons
+#       (README there) as listed in its EXPECTED, and mutants of CGAL's
+#       skeleton, each breaking one property, rejected naming it
 #
 # Exits non-zero if any check failed; prints "cli tests: N passed, M failed".
 # Environment: WSKEL_BIN and WSKEL_GEN override bin/wskel and bin/wskel-gen;
@@ -573,6 +576,57 @@ gen_case 64 "unknown format" star --n 50 --format svg
 gen_case 64 "--seed must be" star --n 50 --seed -1
 run "$GEN" --help
 expect "wskel-gen --help exits 0" 0
+
+# ------------------------------------------------------ (j) --validate
+SK=tests/data/skeletons
+rows=0
+while IFS=$'\t' read -r skel poly code sub || [ -n "$skel" ]; do
+  case "$skel" in '' | '#'*) continue ;; esac
+  rows=$((rows + 1))
+  run "$WSKEL" --validate "$SK/$skel" "$poly"
+  expect "--validate $skel $(basename "$poly")" "$code" "$sub"
+  if [ "$code" = 0 ] && ! grep -q "^valid: " "$OUT"; then
+    fail "--validate $skel prints 'valid:'" "stdout: $(head -c 200 "$OUT")"
+  fi
+done <"$SK/EXPECTED"
+if [ "$rows" -gt 0 ]; then pass "skeletons/EXPECTED has $rows rows"
+else fail "skeletons/EXPECTED has rows" "none read"; fi
+# Mutants of CGAL's skeleton of the touching holes: each breaks one property
+# and --validate must name it (exit 3; a file that is no skeleton of the
+# polygon: exit 1).  NAME<TAB>EXIT<TAB>STDERR SUBSTRING<TAB>python on S.
+HT=tests/data/fuzz/mismatch_arrangement_motorcycle_holes_touching.wpoly
+mutants=0
+while IFS=$'\t' read -r mname mcode msub mpy; do
+  mutants=$((mutants + 1))
+  "$PY" -c "import json,sys
+S=json.load(open(sys.argv[1]))
+$mpy
+json.dump(S,open(sys.argv[2],'w'))" "$SK/holes_touching.cgal.json" "$TMP/mutant.json" ||
+    { fail "mutant $mname: could not be written"; continue; }
+  run "$WSKEL" --validate "$TMP/mutant.json" "$HT"
+  expect "--validate rejects the mutant: $mname" "$mcode" "$msub"
+done <<'EOF'
+input vertex moved	3	validate (a): node 0 is	S['nodes'][0][0]+=1
+node at a negative time	3	validate (b): node 30	S['nodes'][30][2]=-1.0
+node outside the polygon	3	lies outside the polygon	S['nodes'][30][0]+=1e4
+node off its offset lines	3	validate (c):	S['nodes'][30][2]+=0.5
+arc to a missing node	3	validate (c):	S['arcs'][0][1]=len(S['nodes'])
+arc with one face twice	3	validate (c):	S['arcs'][5][3]=S['arcs'][5][2]
+arc dropped	3	validate (d):	del S['arcs'][20]
+arc doubled	3	validate (d):	S['arcs'].append(S['arcs'][20])
+left and right swapped	3	validate (e):	a=S['arcs'][20]; a[2],a[3]=a[3],a[2]
+vertex count of another polygon	1	this polygon has 25	S['n']=24
+no arcs array	1	not a wskel-1 skeleton	del S['arcs']
+EOF
+# a roof cut at a height: valid with --height, not without (a cap is no face)
+run "$WSKEL" --variant deforming --height 0.3 -o "$TMP/cut.json" "$SQUARE"
+expect "deforming --height 0.3 writes a cut roof" 0
+run "$WSKEL" --validate "$TMP/cut.json" --height 0.3 "$SQUARE"
+expect "--validate --height: the cut roof is valid" 0
+run "$WSKEL" --validate "$TMP/cut.json" "$SQUARE"
+expect "--validate without --height: the cap is refused" 3 "validate (c)"
+if [ "$mutants" -ge 10 ]; then pass "$mutants mutants tried"
+else fail "mutants tried" "only $mutants"; fi
 
 # ------------------------------------------------------ summary
 echo "cli tests: $PASSED passed, $FAILED failed"

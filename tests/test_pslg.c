@@ -373,7 +373,7 @@ Test(pslg, tree) {
 Test(pslg, validator_rejects_broken_skeletons) {
     double x[3] = {0, 4, 0}, y[3] = {0, 0, 3};
     uint32_t s[3] = {0, 1, 2}, d[3] = {1, 2, 0};
-    for (int mutation = 0; mutation < 5; mutation++) {
+    for (int mutation = 0; mutation < 6; mutation++) {
         wk_run R;
         wk_run_init(&R);
         wk_polygon *P;
@@ -408,6 +408,16 @@ Test(pslg, validator_rejects_broken_skeletons) {
             S->nodes[0].x = 0.5;
             want = "(pslg a)";
             break;
+        case 5: { /* a second arc leaving a corner: the one there, doubled */
+            uint32_t i = 0;
+            while (i < S->n_arcs && !(S->arcs[i].a < P->n && S->nodes[S->arcs[i].b].t > 0.1))
+                i++;
+            cr_assert(i < S->n_arcs, "no arc leaves a corner");
+            wk_arc c = S->arcs[i];
+            expect_ok(&R, wk_skeleton_add_arc(&R, S, c.a, c.b, c.left, c.right));
+            want = "arcs that leave it";
+            break;
+        }
         }
         wk_status st = wk_validate(&R, P, S, 0, NULL);
         cr_assert_eq(st, WK_EINVALID, "mutation %d accepted", mutation);
