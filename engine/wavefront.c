@@ -86,6 +86,25 @@ wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk) {
     return wf_add_arc(W, x->node, sk, x->ein, x->eout);
 }
 
+/* An input vertex u within eps_d of a line of edge e is near its piece
+** only because the input puts it there: a vertex 6e-6 beyond a
+** non-adjacent edge of a needle 1e6 long, the gap between them outside the
+** polygon (forcing it onto the piece made the gap interior and left a cycle
+** in the skeleton, tests/data/fuzz/needle_vertex_beyond_edge.wpoly), or
+** the vertex of a hole 1e-10 from another hole's vertex (taken as a split
+** at t = 0 it joined the holes as if they touched, and the wavefront went
+** round in circles: tests/data/fuzz/ealgo_holes_vertices_1e-10_apart.wpoly).
+** A vertex that meets a piece comes from its front.  Only input vertices:
+** a constructed vertex's place is a node eps_d wide, and one eps_d behind
+** the line is not near the piece anyway. */
+bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
+    const wk_polygon *P = W->P;
+    if (u >= P->n || W->v[u].t0 != 0) return false;
+    if (wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
+    const wk_offset_line *L = &W->L[e];
+    return L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
+}
+
 void wf_link(wk_wavefront *W, uint32_t a, uint32_t b) {
     W->v[a].next = b;
     W->v[b].prev = a;
@@ -185,6 +204,9 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     wk_point pv = wk_wf_pos(V, W->t_now);
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
+    /* within eps_d behind it: an input vertex that lies behind the input
+    ** line (exact) never meets it (wf_never_reaches_line) */
+    if (d0 < 0 && wf_never_reaches_line(W, vi, A->eout)) return;
     double t = W->t_now + (d0 > 0 ? d0 : 0) / -rate;
     if (t > s->t) return;
     wk_point p = wk_wf_pos(V, t), pa = wk_wf_pos(A, t), pb = wk_wf_pos(B, t);
@@ -542,6 +564,7 @@ done:
     WK_FREE_ARRAY(R, W.run, W.cap_run);
     WK_FREE_ARRAY(R, W.run_node, W.cap_run_node);
     WK_FREE_ARRAY(R, W.dead, W.cap_dead);
+    WK_FREE_ARRAY(R, W.shield, W.cap_shield);
     if (st != WK_OK) {
         wk_skeleton_free(R, W.S);
         return st;
