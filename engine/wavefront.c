@@ -274,6 +274,13 @@ void wk_wf_split_scan(wk_wavefront *W, uint32_t vi) {
 void wk_wf_offer_split(wk_wavefront *W, uint32_t vi, double t, wk_point p, uint32_t a, uint32_t b) {
     wk_wf_vertex *V = &W->v[vi];
     if (a == WK_NONE || !(t < V->ev_t)) return;
+    /* The finders clamp a vertex up to eps_d behind the line to a split
+    ** now; an input vertex exactly behind it never meets it (as in
+    ** wk_wf_split_test). */
+    if (vi < W->P->n && V->t0 == 0 &&
+        wk_offset_distance(&W->L[W->v[a].eout], wk_wf_pos(V, W->t_now), W->t_now) < 0 &&
+        wf_never_reaches_line(W, vi, W->v[a].eout))
+        return;
     V->ev_kind = WK_WF_SPLIT;
     V->ev_t = t;
     V->ev_p = p;
