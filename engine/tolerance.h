@@ -119,6 +119,12 @@
 ** own side is the answer (CGAL's); 64, as WK_FOLD_ULPS, covers the few
 ** roundings of that computation. */
 #define WK_SPLIT_SIDE_ULPS 64.0
+/* ... and only when the stretch of the piece between x and the cut grows
+** faster than this times the speeds of its ends: a stretch that shrinks
+** collapses at once into what the tolerance picture makes now, and one that
+** keeps its length would stay below eps_d for good.  1e-9, the relative
+** bar of WK_PARALLEL_SIN: slower is parallel motion at the tolerance. */
+#define WK_SPLIT_SIDE_GROWTH_REL 1e-9
 /* --check-invariants: a vertex lies on its edges' offset lines within this
 ** many (eps_d + speed * eps_t), times (1 + t) for the growth of rounding with
 ** time: generous on purpose, it looks for broken invariants, not rounding. */

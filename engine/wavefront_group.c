@@ -312,10 +312,11 @@ static const wk_wf_shield *shield_of(const wk_wavefront *W, uint32_t u, uint32_t
 ** progress at t = 0").  Both vertices are input vertices, so where v meets
 ** the piece's line relative to x follows from the input coordinates to
 ** rounding (input_rel): when the cut lies inside the piece by more than
-** WK_SPLIT_SIDE_ULPS ulps of that, x is shielded from the node: it does
-** not arrive there, and the node cuts the piece next to it (plan_pinches,
-** plan_seed_cuts).  Otherwise (a cut at x within rounding: a true vertex
-** event) the tolerance picture stays. */
+** WK_SPLIT_SIDE_ULPS ulps of that, and the stretch between x and the cut
+** grows, x is shielded from the node: it does not arrive there, and the
+** node cuts the piece next to it (plan_pinches, plan_seed_cuts).
+** Otherwise (a cut at x within rounding: a true vertex event; a stretch
+** that shrinks to an edge event at once) the tolerance picture stays. */
 static wk_status plan_shields(wk_wavefront *W, double t) {
     wk_run *R = W->R;
     W->n_shield = 0;
@@ -347,6 +348,22 @@ static wk_status plan_shields(wk_wavefront *W, double t) {
             double mag = fabs(r0.x) + fabs(r0.y) +
                          (fabs(V->vel.x) + fabs(V->vel.y) + fabs(X->vel.x) + fabs(X->vel.y)) * fabs(dt);
             if (!(s > WK_SPLIT_SIDE_ULPS * DBL_EPSILON * mag)) continue;
+            /* The stretch of the piece between x and the cut, between x and
+            ** the vertex the split makes there, must grow: one that shrinks
+            ** collapses a moment later, and that edge event joins the same
+            ** vertices as the tolerance picture does now (a hole's vertex
+            ** 1e-10 from a convex corner of the outer ring), while its
+            ** sub-tolerance moment would merge the split's other new vertex
+            ** into it (a cycle of two arcs). */
+            wk_point vy;
+            uint32_t f = end ? V->ein : V->eout;
+            if ((end ? wk_vertex_velocity(&W->L[f], L, &vy) : wk_vertex_velocity(L, &W->L[f], &vy)) !=
+                WK_VEL_REGULAR)
+                continue;
+            double grow = end ? L->ux * (X->vel.x - vy.x) + L->uy * (X->vel.y - vy.y)
+                              : L->ux * (vy.x - X->vel.x) + L->uy * (vy.y - X->vel.y);
+            double speeds = fabs(vy.x) + fabs(vy.y) + fabs(X->vel.x) + fabs(X->vel.y);
+            if (!(grow > WK_SPLIT_SIDE_GROWTH_REL * speeds)) continue;
             if (WK_GROW(R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return R->err.code;
             W->shield[W->n_shield++] = (wk_wf_shield){x, k, a};
         }
