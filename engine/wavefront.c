@@ -32,6 +32,7 @@
 */
 #include "wavefront_internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -103,6 +104,35 @@ bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     if (wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
     const wk_offset_line *L = &W->L[e];
     return L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
+}
+
+/* Where input vertex x is relative to input vertex y at time t: the input
+** coordinates' difference (exact for points closer than either's
+** magnitude, Sterbenz) plus the relative motion, so a gap far below eps_d
+** keeps its sign and size, which positions relative to W->origin (rounded
+** to the coordinates' ulps) would not. */
+static wk_point input_rel(const wk_wavefront *W, uint32_t x, uint32_t y, double t) {
+    const wk_wf_vertex *X = &W->v[x], *Y = &W->v[y];
+    return (wk_point){(W->P->p[x].x - W->P->p[y].x) + (X->vel.x - Y->vel.x) * t,
+                      (W->P->p[x].y - W->P->p[y].y) + (X->vel.y - Y->vel.y) * t};
+}
+
+int wf_input_cut_side(const wk_wavefront *W, uint32_t v, uint32_t x, const wk_offset_line *L, int end,
+                      double t) {
+    if (!W->input_sides || !wf_is_input_vertex(W, v) || !wf_is_input_vertex(W, x)) return 0;
+    const wk_wf_vertex *V = &W->v[v], *X = &W->v[x];
+    double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
+    if (!(rate < 0)) return 0;
+    /* v relative to x now, then where v meets the line (x is on it) */
+    wk_point r0 = input_rel(W, v, x, t);
+    double dt = (L->nx * r0.x + L->ny * r0.y) / -rate;
+    wk_point r = {r0.x + (V->vel.x - X->vel.x) * dt, r0.y + (V->vel.y - X->vel.y) * dt};
+    double s = L->ux * r.x + L->uy * r.y;
+    if (end) s = -s; /* measured from the piece's end backwards */
+    double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON *
+                 (fabs(r0.x) + fabs(r0.y) +
+                  (fabs(V->vel.x) + fabs(V->vel.y) + fabs(X->vel.x) + fabs(X->vel.y)) * fabs(dt));
+    return s > bar ? 1 : s < -bar ? -1 : 0;
 }
 
 void wf_link(wk_wavefront *W, uint32_t a, uint32_t b) {
@@ -213,6 +243,14 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     double sa = (p.x - pa.x) * L->ux + (p.y - pa.y) * L->uy;
     double sb = (pb.x - p.x) * L->ux + (pb.y - p.y) * L->uy;
     if (sa < -W->eps_d || sb < -W->eps_d) return;
+    /* Within eps_d of an end, the input decides when v and that end are
+    ** input vertices: a cut past the end by more than rounding is no hit
+    ** of this piece (two holes whose vertices lie 1.9e-7 apart: the hit 3e-8
+    ** past the other hole's vertex joined the holes as if they touched, and
+    ** the wavefront went round in circles; the real first event is another
+    ** one). */
+    if (sa <= W->eps_d && wf_input_cut_side(W, vi, a, L, 0, W->t_now) < 0) return;
+    if (sb <= W->eps_d && wf_input_cut_side(W, vi, b, L, 1, W->t_now) < 0) return;
     if (t == s->t && s->a != WK_NONE && a > s->a) return; /* deterministic tie */
     refine(W, V, V->ein, V->eout, A->eout, &t, &p);
     s->t = t;
@@ -281,6 +319,16 @@ void wk_wf_offer_split(wk_wavefront *W, uint32_t vi, double t, wk_point p, uint3
         wk_offset_distance(&W->L[W->v[a].eout], wk_wf_pos(V, W->t_now), W->t_now) < 0 &&
         wf_never_reaches_line(W, vi, W->v[a].eout))
         return;
+    /* ... and a cut past an input end of the piece by more than rounding
+    ** is no hit of it (as in wk_wf_split_test) */
+    if (W->input_sides && vi < W->P->n && W->v[a].next == b) {
+        const wk_offset_line *L = &W->L[W->v[a].eout];
+        double e2 = W->eps_d * W->eps_d;
+        if (wf_dist2(p, wk_wf_pos(&W->v[a], t)) <= e2 && wf_input_cut_side(W, vi, a, L, 0, W->t_now) < 0)
+            return;
+        if (wf_dist2(p, wk_wf_pos(&W->v[b], t)) <= e2 && wf_input_cut_side(W, vi, b, L, 1, W->t_now) < 0)
+            return;
+    }
     V->ev_kind = WK_WF_SPLIT;
     V->ev_t = t;
     V->ev_p = p;
@@ -542,6 +590,12 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
     /* tolerance.h: eps_d and eps_t */
     W.eps_t = WK_TOL_TIME * W.eps_d / wmax;
     W.eps_g = W.eps_d;
+    /* A polygon with two rings whose vertices lie 3e-10 apart (a hole at a
+    ** notch's tip, weighted) has a cascade of sub-tolerance events after
+    ** the first split resolved on the input's side, which the tolerance
+    ** picture then closes into a cycle; at 4 eps_d, with the gap closed as
+    ** the tolerance sees it, the skeleton is valid. */
+    W.input_sides = R->opt.tol_scale == 1;
     wk_status st = WK_OK;
     W.L = WK_NEW_ARRAY(R, wk_offset_line, P->n);
     if (!W.L) {

@@ -35,7 +35,6 @@
 */
 #include "wavefront_internal.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -273,21 +272,6 @@ static wk_status plan_nodes(wk_wavefront *W, double t) {
 
 /* ------------------------------------------------------------ shields */
 
-/* Where input vertex x is relative to input vertex y at time t: the input
-** coordinates' difference (exact for points closer than either's
-** magnitude, Sterbenz) plus the relative motion, so a gap far below eps_d
-** keeps its sign and size, which positions relative to W->origin (rounded
-** to the coordinates' ulps) would not. */
-static wk_point input_rel(const wk_wavefront *W, uint32_t x, uint32_t y, double t) {
-    const wk_wf_vertex *X = &W->v[x], *Y = &W->v[y];
-    return (wk_point){(W->P->p[x].x - W->P->p[y].x) + (X->vel.x - Y->vel.x) * t,
-                      (W->P->p[x].y - W->P->p[y].y) + (X->vel.y - Y->vel.y) * t};
-}
-
-static bool is_input_vertex(const wk_wavefront *W, uint32_t u) {
-    return u < W->P->n && W->v[u].t0 == 0;
-}
-
 /* The shield of vertex u against node k: the piece it belongs to that the
 ** node cuts instead (WK_NONE: not shielded).  A forced vertex is a node of
 ** its own and is never shielded. */
@@ -311,7 +295,7 @@ static const wk_wf_shield *shield_of(const wk_wavefront *W, uint32_t u, uint32_t
 ** end, which the split test takes for a split now, again and again ("no
 ** progress at t = 0").  Both vertices are input vertices, so where v meets
 ** the piece's line relative to x follows from the input coordinates to
-** rounding (input_rel): when the cut lies inside the piece by more than
+** rounding (wf_input_cut_side): when the cut lies inside the piece by more than
 ** WK_SPLIT_SIDE_ULPS ulps of that, and the stretch between x and the cut
 ** grows, x is shielded from the node: it does not arrive there, and the
 ** node cuts the piece next to it (plan_pinches, plan_seed_cuts).
@@ -320,34 +304,24 @@ static const wk_wf_shield *shield_of(const wk_wavefront *W, uint32_t u, uint32_t
 static wk_status plan_shields(wk_wavefront *W, double t) {
     wk_run *R = W->R;
     W->n_shield = 0;
-    for (uint32_t i = 0; i < W->n_seeds; i++) {
+    for (uint32_t i = 0; W->input_sides && i < W->n_seeds; i++) {
         uint32_t v = W->seeds[i];
         const wk_wf_vertex *V = &W->v[v];
-        if (V->ev_kind != WK_WF_SPLIT || !is_input_vertex(W, v)) continue;
+        if (V->ev_kind != WK_WF_SPLIT || !wf_is_input_vertex(W, v)) continue;
         uint32_t a = V->ev_a, b = V->ev_b;
         if (!W->v[a].alive || W->v[a].next != b) continue;
         uint32_t k = find_cluster(W, V->ev_p);
         if (k == WK_NONE) continue;
         const wk_offset_line *L = &W->L[W->v[a].eout];
-        double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
-        if (!(rate < 0)) continue;
         for (int end = 0; end < 2; end++) {
             uint32_t x = end ? b : a;
-            if (!is_input_vertex(W, x)) continue;
+            if (!wf_is_input_vertex(W, x)) continue;
             bool seed = false;
             for (uint32_t j = 0; j < W->n_seeds; j++) seed |= W->seeds[j] == x;
             for (uint32_t j = 0; j < W->n_forced; j++) seed |= W->forced[j] == x;
             if (seed) continue;
+            if (wf_input_cut_side(W, v, x, L, end, t) <= 0) continue;
             const wk_wf_vertex *X = &W->v[x];
-            /* v relative to x now, then where v meets the line (x is on it) */
-            wk_point r0 = input_rel(W, v, x, t);
-            double dt = (L->nx * r0.x + L->ny * r0.y) / -rate;
-            wk_point r = {r0.x + (V->vel.x - X->vel.x) * dt, r0.y + (V->vel.y - X->vel.y) * dt};
-            double s = L->ux * r.x + L->uy * r.y;
-            if (end) s = -s; /* measured from b backwards */
-            double mag = fabs(r0.x) + fabs(r0.y) +
-                         (fabs(V->vel.x) + fabs(V->vel.y) + fabs(X->vel.x) + fabs(X->vel.y)) * fabs(dt);
-            if (!(s > WK_SPLIT_SIDE_ULPS * DBL_EPSILON * mag)) continue;
             /* The stretch of the piece between x and the cut, between x and
             ** the vertex the split makes there, must grow: one that shrinks
             ** collapses a moment later, and that edge event joins the same
