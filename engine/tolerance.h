@@ -117,13 +117,11 @@
 ** side of such a gap differs by whole faces (two holes 1e-10 apart,
 ** tests/data/fuzz/ealgo_holes_vertices_1e-10_apart.wpoly), so the input's
 ** own side is the answer (CGAL's); 64, as WK_FOLD_ULPS, covers the few
-** roundings of that computation.  The split test uses the same bar the
-** other way: a cut past such an end by more than it is no hit of the
-** piece (wavefront.c, wf_input_cut_side).  Both at the nominal tolerance
-** only (tol_scale 1): the retries of wk_solve_checked close such gaps as
-** the tolerance sees them, where the cascade of sub-tolerance events after
-** the first cannot be resolved consistently (constructed vertices have no
-** input coordinates to decide by). */
+** roundings of that computation.  At the nominal and finer tolerances
+** only (tol_scale <= 1): the coarser retries of wk_solve_checked close such
+** gaps as the tolerance sees them, where the cascade of sub-tolerance
+** events after the first cannot be resolved consistently (constructed
+** vertices have no input coordinates to decide by). */
 #define WK_SPLIT_SIDE_ULPS 64.0
 /* ... and only when the stretch of the piece between x and the cut grows
 ** faster than this times the speeds of its ends: a stretch that shrinks

@@ -104,9 +104,9 @@ struct wk_wavefront {
     wk_wf_shield *shield; uint32_t n_shield, cap_shield; /* this group's shielded piece ends */
     bool input_sides;  /* sub-tolerance gaps between input vertices are
                           resolved on the input's side (wf_input_cut_side,
-                          plan_shields): at the nominal tolerance only, so
-                          the retries of wk_solve_checked fall back on the
-                          tolerance picture where the cascade of
+                          plan_shields): at the nominal tolerance and
+                          finer only, so the coarser retries of
+                          wk_solve_checked fall back on the tolerance picture where the cascade of
                           sub-tolerance events that follows cannot be
                           resolved consistently */
     const wk_split_finder *finder; /* how split events are found */
