@@ -235,8 +235,12 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
     /* within eps_d behind it: an input vertex that lies behind the input
-    ** line (exact) never meets it (wf_never_reaches_line) */
-    if (d0 < 0 && wf_never_reaches_line(W, vi, A->eout)) return;
+    ** line of another ring (exact) never meets it (wf_never_reaches_line).
+    ** Within one ring such a vertex is a sub-tolerance feature resolved at
+    ** tolerance level (README): the chamfer vertices of 9.5e-12 at a reflex
+    ** corner (tests/data/degenerate/arr_chamfer_contact.wpoly) split on the
+    ** pieces across it. */
+    if (d0 < 0 && wf_other_ring(W, vi, A->eout) && wf_never_reaches_line(W, vi, A->eout)) return;
     double t = W->t_now + (d0 > 0 ? d0 : 0) / -rate;
     if (t > s->t) return;
     wk_point p = wk_wf_pos(V, t), pa = wk_wf_pos(A, t), pb = wk_wf_pos(B, t);
@@ -305,9 +309,9 @@ void wk_wf_offer_split(wk_wavefront *W, uint32_t vi, double t, wk_point p, uint3
     wk_wf_vertex *V = &W->v[vi];
     if (a == WK_NONE || !(t < V->ev_t)) return;
     /* The finders clamp a vertex up to eps_d behind the line to a split
-    ** now; an input vertex exactly behind it never meets it (as in
-    ** wk_wf_split_test). */
-    if (vi < W->P->n && V->t0 == 0 &&
+    ** now; an input vertex exactly behind the line of another ring never
+    ** meets it (as in wk_wf_split_test). */
+    if (vi < W->P->n && V->t0 == 0 && wf_other_ring(W, vi, W->v[a].eout) &&
         wk_offset_distance(&W->L[W->v[a].eout], wk_wf_pos(V, W->t_now), W->t_now) < 0 &&
         wf_never_reaches_line(W, vi, W->v[a].eout))
         return;

@@ -135,6 +135,10 @@ void wf_link(wk_wavefront *W, uint32_t a, uint32_t b);
 ** of edge e: it lies strictly behind e's input line (exact test) and does
 ** not approach it. */
 bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e);
+/* True if input vertex u and input edge e lie on different rings. */
+static inline bool wf_other_ring(const wk_wavefront *W, uint32_t u, uint32_t e) {
+    return u < W->P->n && wk_polygon_ring(W->P, u) != wk_polygon_ring(W->P, e);
+}
 /* True if u is an input vertex alive since t = 0 (it moves from its input
 ** coordinates P->p[u]). */
 static inline bool wf_is_input_vertex(const wk_wavefront *W, uint32_t u) {
