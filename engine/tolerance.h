@@ -109,6 +109,26 @@
 ** this many eps_d of one line: the group resolution, working with nodes
 ** eps_d apart, can leave such a cycle up to a few hundred eps_d thin. */
 #define WK_FLAT_CYCLE_SLACK 1e3
+/* A split of an input vertex onto a piece of an input edge within eps_d of
+** an input vertex x at the piece's end passes x by (x does not arrive at the
+** split's node; wavefront_group.c, plan_shields) when the cut lies inside the
+** piece by more than this many ulps of the input gap and motion it is
+** computed from: rounding, not tolerance, because the skeleton on either
+** side of such a gap differs by whole faces (two holes 1e-10 apart,
+** tests/data/fuzz/ealgo_holes_vertices_1e-10_apart.wpoly), so the input's
+** own side is the answer (CGAL's); 64, as WK_FOLD_ULPS, covers the few
+** roundings of that computation.  At the nominal and finer tolerances
+** only (tol_scale <= 1): the coarser retries of wk_solve_checked close such
+** gaps as the tolerance sees them, where the cascade of sub-tolerance
+** events after the first cannot be resolved consistently (constructed
+** vertices have no input coordinates to decide by). */
+#define WK_SPLIT_SIDE_ULPS 64.0
+/* ... and only when the stretch of the piece between x and the cut grows
+** faster than this times the speeds of its ends: a stretch that shrinks
+** collapses at once into what the tolerance picture makes now, and one that
+** keeps its length would stay below eps_d for good.  1e-9, the relative
+** bar of WK_PARALLEL_SIN: slower is parallel motion at the tolerance. */
+#define WK_SPLIT_SIDE_GROWTH_REL 1e-9
 /* --check-invariants: a vertex lies on its edges' offset lines within this
 ** many (eps_d + speed * eps_t), times (1 + t) for the growth of rounding with
 ** time: generous on purpose, it looks for broken invariants, not rounding. */

@@ -270,7 +270,87 @@ static wk_status plan_nodes(wk_wavefront *W, double t) {
     return collect_cycles(W);
 }
 
-/* Step 2a: every vertex within tolerance of a node arrives there. */
+/* ------------------------------------------------------------ shields */
+
+/* The shield of vertex u against node k: the piece it belongs to that the
+** node cuts instead (WK_NONE: not shielded).  A forced vertex is a node of
+** its own and is never shielded. */
+static const wk_wf_shield *shield_of(const wk_wavefront *W, uint32_t u, uint32_t k) {
+    for (uint32_t i = 0; i < W->n_shield; i++)
+        if (W->shield[i].vertex == u && W->shield[i].node == k) return &W->shield[i];
+    return NULL;
+}
+
+/* Step 1b, sub-tolerance splits of the input.  An input vertex v that hits
+** a piece (a, b) of an input edge within eps_d of an end x that is an input
+** vertex of another ring (two holes whose vertices lie 1e-10 apart, a hole's vertex
+** next to a vertex of the outer ring) would make x arrive at v's node: the
+** two rings then touch there, as if the gap were closed.  But the skeleton
+** of the input is not that of the closed gap: v cuts the piece on x's one
+** side, and the stretch of the piece between x and the cut may grow into a
+** face as wide as the polygon (CGAL's skeleton of
+** tests/data/fuzz/ealgo_holes_vertices_1e-10_apart.wpoly), so the tolerance
+** picture is a different skeleton, and an inconsistent one: the vertex it
+** puts between the two rings moves behind the piece's line at the piece's
+** end, which the split test takes for a split now, again and again ("no
+** progress at t = 0").  Both vertices are input vertices, so where v meets
+** the piece's line relative to x follows from the input coordinates to
+** rounding (wf_input_cut_side): when the cut lies inside the piece by more than
+** WK_SPLIT_SIDE_ULPS ulps of that, and the stretch between x and the cut
+** grows, x is shielded from the node: it does not arrive there, and the
+** node cuts the piece next to it (plan_pinches, plan_seed_cuts).
+** Otherwise (a cut at x within rounding: a true vertex event; a stretch
+** that shrinks to an edge event at once) the tolerance picture stays. */
+static wk_status plan_shields(wk_wavefront *W, double t) {
+    wk_run *R = W->R;
+    W->n_shield = 0;
+    for (uint32_t i = 0; W->input_sides && i < W->n_seeds; i++) {
+        uint32_t v = W->seeds[i];
+        const wk_wf_vertex *V = &W->v[v];
+        if (V->ev_kind != WK_WF_SPLIT || !wf_is_input_vertex(W, v)) continue;
+        uint32_t a = V->ev_a, b = V->ev_b;
+        if (!W->v[a].alive || W->v[a].next != b) continue;
+        uint32_t k = find_cluster(W, V->ev_p);
+        if (k == WK_NONE) continue;
+        const wk_offset_line *L = &W->L[W->v[a].eout];
+        for (int end = 0; end < 2; end++) {
+            uint32_t x = end ? b : a;
+            /* rings that nearly touch only: a sub-tolerance feature of one
+            ** ring (an edge of 1e-11 chamfering a reflex corner,
+            ** tests/data/degenerate/arr_chamfer_contact.wpoly) is resolved
+            ** at tolerance level, as README says */
+            if (!wf_is_input_vertex(W, x) || wk_polygon_ring(W->P, x) == wk_polygon_ring(W->P, v)) continue;
+            bool seed = false;
+            for (uint32_t j = 0; j < W->n_seeds; j++) seed |= W->seeds[j] == x;
+            for (uint32_t j = 0; j < W->n_forced; j++) seed |= W->forced[j] == x;
+            if (seed) continue;
+            if (wf_input_cut_side(W, v, x, L, end, t) <= 0) continue;
+            const wk_wf_vertex *X = &W->v[x];
+            /* The stretch of the piece between x and the cut, between x and
+            ** the vertex the split makes there, must grow: one that shrinks
+            ** collapses a moment later, and that edge event joins the same
+            ** vertices as the tolerance picture does now (a hole's vertex
+            ** 1e-10 from a convex corner of the outer ring), while its
+            ** sub-tolerance moment would merge the split's other new vertex
+            ** into it (a cycle of two arcs). */
+            wk_point vy;
+            uint32_t f = end ? V->ein : V->eout;
+            if ((end ? wk_vertex_velocity(&W->L[f], L, &vy) : wk_vertex_velocity(L, &W->L[f], &vy)) !=
+                WK_VEL_REGULAR)
+                continue;
+            double grow = end ? L->ux * (X->vel.x - vy.x) + L->uy * (X->vel.y - vy.y)
+                              : L->ux * (vy.x - X->vel.x) + L->uy * (vy.y - X->vel.y);
+            double speeds = fabs(vy.x) + fabs(vy.y) + fabs(X->vel.x) + fabs(X->vel.y);
+            if (!(grow > WK_SPLIT_SIDE_GROWTH_REL * speeds)) continue;
+            if (WK_GROW(R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return R->err.code;
+            W->shield[W->n_shield++] = (wk_wf_shield){x, k, a};
+        }
+    }
+    return WK_OK;
+}
+
+/* Step 2a: every vertex within tolerance of a node arrives there (unless
+** shielded from it). */
 static void plan_arrivals(wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < W->n_comp; i++) {
         wk_wf_vertex *u = &W->v[W->comp[i]];
@@ -278,6 +358,7 @@ static void plan_arrivals(wk_wavefront *W, double t) {
         ** vertex that close to a node arrives there in the same instant */
         double speed = fabs(u->vel.x) + fabs(u->vel.y);
         u->at = find_cluster_within(W, wk_wf_pos(u, t), W->eps_g + speed * W->eps_t * (W->eps_g / W->eps_d));
+        if (u->at != WK_NONE && W->n_shield && shield_of(W, W->comp[i], u->at)) u->at = WK_NONE;
     }
     /* a free vertex whose two neighbours arrive at the same node closes a
     ** triangle of zero size with it: it arrives too */
@@ -341,15 +422,19 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
             if (fabs(off) > W->eps_g) continue;
             /* A node on the line within tolerance of an end of the piece: that
             ** end arrives at the node (else the node would touch the piece
-            ** without cutting it, and the group would change nothing). */
-            if (s <= W->eps_g) {
+            ** without cutting it, and the group would change nothing).  A
+            ** shielded end does not: the node cuts the piece it is shielded
+            ** on next to it, and misses its other piece (plan_shields). */
+            const wk_wf_shield *sh = NULL;
+            if (s <= W->eps_g && !(W->n_shield && (sh = shield_of(W, a, k)))) {
                 if (A->at == WK_NONE) W->v[a].at = k;
                 continue;
             }
-            if (s >= len - W->eps_g) {
+            if (s >= len - W->eps_g && !(W->n_shield && (sh = shield_of(W, A->next, k)))) {
                 if (B->at == WK_NONE) W->v[A->next].at = k;
                 continue;
             }
+            if (sh && sh->piece != a) continue;
             if (WK_GROW(R, W->pin, W->cap_pin, W->n_pin + 1) != WK_OK) return R->err.code;
             W->pin[W->n_pin++] = (wk_wf_pinch){a, s, k};
         }
@@ -381,9 +466,10 @@ static wk_status plan_seed_cuts(wk_wavefront *W, double t) {
         wk_point q = W->cl[k].p;
         double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
         double sq = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
-        if (sq <= W->eps_g) {
+        bool shielded = W->n_shield && (shield_of(W, a, k) || shield_of(W, A->next, k));
+        if (sq <= W->eps_g && !shielded) {
             W->v[a].at = k;
-        } else if (sq >= len - W->eps_g) {
+        } else if (sq >= len - W->eps_g && !shielded) {
             W->v[A->next].at = k;
         } else {
             if (WK_GROW(R, W->pin, W->cap_pin, W->n_pin + 1) != WK_OK) return R->err.code;
@@ -461,31 +547,12 @@ static wk_status plan_cancel(wk_wavefront *W) {
     return WK_OK;
 }
 
-/* True if input vertex u can never reach the line of edge e: it lies
-** strictly behind e's input line (exact test) and moves away from it
-** (relative to the line, which moves forward at its weight), so it stays
-** behind at every t.  Such a vertex is within eps_g of a piece of e only
-** because the input puts it there: a vertex 6e-6 beyond a non-adjacent edge
-** of a needle 1e6 long, the gap between them outside the polygon.  Forcing
-** it onto the piece made the gap interior and left a cycle in the skeleton
-** (tests/data/fuzz/needle_vertex_beyond_edge.wpoly).  A vertex that meets a
-** piece comes from its front.  Only input vertices: a constructed vertex's
-** place is a node eps_g wide, and one eps_g behind the line is not near the
-** piece anyway. */
-static bool never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
-    const wk_polygon *P = W->P;
-    if (u >= P->n || W->v[u].t0 != 0) return false;
-    if (wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
-    const wk_offset_line *L = &W->L[e];
-    return L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
-}
-
 /* Step 5a: vertices that meet the group without being at a node yet.  An
 ** untouched vertex whose pieces both lead to the same node closes a
 ** triangle of no area with it; an untouched vertex lying on a sub-piece
 ** between two nodes (where parallel edges met: an end of a collinear step
 ** of the other side) meets it too, unless it is an input vertex that
-** never reaches the piece's line (never_reaches_line).  Each becomes a node
+** never reaches the piece's line (wf_never_reaches_line).  Each becomes a node
 ** (*again). */
 static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
@@ -515,7 +582,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
             double sq = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
             if (sq <= -W->eps_g || sq >= len + W->eps_g || fabs(off) > W->eps_g) continue;
-            if (never_reaches_line(W, W->comp[j], x->edge)) continue;
+            if (wf_never_reaches_line(W, W->comp[j], x->edge)) continue;
             if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, W->comp[j]) != WK_OK)
                 return R->err.code;
             *again = true;
@@ -655,7 +722,7 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
     *again = false;
     W->n_cl = W->n_pin = W->n_sub = W->n_pair = 0;
-    if (plan_nodes(W, t) != WK_OK) return R->err.code;
+    if (plan_nodes(W, t) != WK_OK || plan_shields(W, t) != WK_OK) return R->err.code;
     plan_arrivals(W, t);
     if (W->local_walk && !local_walk_suffices(W, t)) {
         /* the group reaches beyond the local walk: take whole cycles */

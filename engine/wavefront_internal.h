@@ -61,6 +61,11 @@ typedef struct wk_wf_sub {
 /* An incoming and an outgoing sub-piece joined at a node: a new vertex. */
 typedef struct wk_wf_pair { uint32_t in, out, node, vertex; } wk_wf_pair;
 
+/* A piece end that a split of this group passes by (wavefront_group.c,
+** plan_shields): vertex `vertex` does not arrive at node `node`, which cuts
+** the piece starting at `piece` instead. */
+typedef struct wk_wf_shield { uint32_t vertex, node, piece; } wk_wf_shield;
+
 #define NODE_BIT 0x80000000u
 #define IS_NODE(p) (((p) & NODE_BIT) != 0)
 #define NODE_OF(p) ((p) & ~NODE_BIT)
@@ -96,6 +101,14 @@ struct wk_wavefront {
     bool local_walk;   /* this group's vertices come from local walks (collect_local) */
     uint8_t *cycflag; uint32_t n_cyc, cap_cycflag;
     uint32_t *run, *run_node; uint32_t n_run, cap_run, cap_run_node; /* collinear runs */
+    wk_wf_shield *shield; uint32_t n_shield, cap_shield; /* this group's shielded piece ends */
+    bool input_sides;  /* sub-tolerance gaps between input vertices are
+                          resolved on the input's side (wf_input_cut_side,
+                          plan_shields): at the nominal tolerance and
+                          finer only, so the coarser retries of
+                          wk_solve_checked fall back on the tolerance picture where the cascade of
+                          sub-tolerance events that follows cannot be
+                          resolved consistently */
     const wk_split_finder *finder; /* how split events are found */
     void *finder_ud;
 };
@@ -118,6 +131,28 @@ wk_status wf_add_arc(wk_wavefront *W, uint32_t a, uint32_t b, uint32_t left, uin
 /* Kill v at skeleton node sk: its arc runs from where it started to sk. */
 wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk);
 void wf_link(wk_wavefront *W, uint32_t a, uint32_t b);
+/* True if input vertex u (alive since t = 0) never reaches the offset line
+** of edge e: it lies strictly behind e's input line (exact test) and does
+** not approach it. */
+bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e);
+/* True if input vertex u and input edge e lie on different rings. */
+static inline bool wf_other_ring(const wk_wavefront *W, uint32_t u, uint32_t e) {
+    return u < W->P->n && wk_polygon_ring(W->P, u) != wk_polygon_ring(W->P, e);
+}
+/* True if u is an input vertex alive since t = 0 (it moves from its input
+** coordinates P->p[u]). */
+static inline bool wf_is_input_vertex(const wk_wavefront *W, uint32_t u) {
+    return u < W->P->n && W->v[u].t0 == 0;
+}
+/* Where input vertex v, approaching the offset line L, meets it relative
+** to input vertex x on L, an end of a piece of L (end 0: its start, 1: its
+** end), computed at time t from the input coordinates: +1 inside the piece
+** (beyond x towards its other end) by more than rounding
+** (WK_SPLIT_SIDE_ULPS), -1 outside it past x by more than rounding, 0
+** within rounding of x or when v or x is no input vertex, v does not
+** approach L or W->input_sides is off. */
+int wf_input_cut_side(const wk_wavefront *W, uint32_t v, uint32_t x, const wk_offset_line *L, int end,
+                      double t);
 wk_status wf_mark_fresh(wk_wavefront *W, uint32_t v);
 wk_status wf_push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint32_t x);
 
