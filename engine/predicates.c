@@ -41,7 +41,7 @@
 #define WK_EPS (DBL_EPSILON / 2.0)
 /* Shewchuk's stage A bound for orient2d: |det - fl(det)| <= A * detsum where
 ** detsum = |detleft| + |detright|. */
-static const double CCW_ERRBOUND_A = (3.0 + 16.0 * WK_EPS) * WK_EPS;
+static const double CCW_ERRBOUND_A = WK_ORIENT2D_ERRBOUND_A; /* (3 + 16 eps) eps */
 /* Dekker's splitter 2^ceil(53/2) + 1: splits a double into two 26-bit halves
 ** whose products are exact. */
 static const double SPLITTER = 134217729.0;

@@ -22,6 +22,7 @@
 #ifndef WSKEL_H
 #define WSKEL_H
 
+#include <float.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -585,7 +586,18 @@ bool wk_segments_intersect(wk_point a, wk_point b, wk_point c, wk_point d);
 /* wk_orient2d and wk_segments_meet for callers that have a run: each
 ** orientation test that needed the exact stage counts 1 on
 ** WK_COUNTER_exact_fallbacks. */
+/* wk_orient2d's float filter (its first stage, the same bound and the same
+** decisions), inline: the counted callers are the validator's and the
+** variants' inner loops (point-in-polygon crossing counts), where the call
+** cost more than the filter.  The exact stage is wk_orient2d's. */
+#define WK_ORIENT2D_ERRBOUND_A ((3.0 + 8.0 * DBL_EPSILON) * (0.5 * DBL_EPSILON))
 static inline int wk_orient2d_counted(wk_run *R, wk_point a, wk_point b, wk_point c) {
+    double detleft = (a.x - c.x) * (b.y - c.y);
+    double detright = (a.y - c.y) * (b.x - c.x);
+    double det = detleft - detright;
+    double detsum = (detleft < 0 ? -detleft : detleft) + (detright < 0 ? -detright : detright);
+    if (det >= WK_ORIENT2D_ERRBOUND_A * detsum || -det >= WK_ORIENT2D_ERRBOUND_A * detsum)
+        return (det > 0) - (det < 0);
     bool exact;
     int o = wk_orient2d(a, b, c, &exact);
     if (exact) wk_count(R, WK_COUNTER_exact_fallbacks, 1);

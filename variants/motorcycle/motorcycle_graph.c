@@ -118,10 +118,14 @@ typedef struct sim_group {
 } sim_group;
 
 /* What a crossing needs of a motorcycle (meet): one compact array by id,
-** read by the cell scans (40 bytes a motorcycle instead of m[]'s 88). */
+** read by the cell scans (56 bytes a motorcycle instead of m[]'s 88).
+** clen is the crash length once crashed (m[id].len, final), INFINITY while
+** alive: a scan's pair test then reads this copy alone, not crashed[] and
+** m[] as well (in a hub most listed motorcycles have crashed). */
 typedef struct geo {
     wk_point o, u;
     double wall_len;
+    double clen;
     uint32_t id;
 } geo;
 
@@ -131,6 +135,7 @@ typedef struct geo {
 ** and offset bin c. */
 typedef struct ix_line {
     uint32_t next;
+    uint32_t id; /* L->e[k], beside next: a chain walk reads one array */
 } ix_line;
 
 typedef struct cell_index {
@@ -187,7 +192,7 @@ static inline double tau(const wk_motorcycle *m, double d) { return wk_motorcycl
 ** and the motorcycles' start data alone. */
 static inline geo geo_of(const sim *S, uint32_t i) {
     const wk_motorcycle *m = &S->m[i];
-    return (geo){m->o, m->u, m->wall_len, i};
+    return (geo){m->o, m->u, m->wall_len, INFINITY, i};
 }
 
 /* The same from the copies a (of the smaller id) and b. */
@@ -255,6 +260,7 @@ static void crash_trace(sim *S, uint32_t l, double dl, uint32_t w, double dw) {
     wk_motorcycle *m = &S->m[l];
     S->crashed[l] = 1;
     m->len = dl;
+    if (S->geo) S->geo[l].clen = dl;
     m->kind = WK_MCG_TRACE;
     m->other = w;
     m->other_len = dw;
@@ -288,6 +294,7 @@ static void join(sim *S, uint32_t g, uint32_t i, double d) {
     if (!S->crashed[i]) {
         S->crashed[i] = 1;
         m->len = d;
+        if (S->geo) S->geo[i].clen = d;
     } else if (m->kind == WK_MCG_TRACE && G->on_other == WK_NONE) {
         G->on_other = m->other;
         G->on_len = m->other_len;
@@ -442,7 +449,7 @@ static wk_status test_pair(sim *S, const geo *gi, const geo *gj, uint32_t cell) 
     double da, db;
     wk_point x;
     S->pairs++;
-    if (S->crashed[j]) {
+    if (gj->clen < INFINITY) {
         /* The rule below (j crashed before x) decided from j's distance
         ** alone, computed by meet_geo's very expressions, before the
         ** crossing point and its cell: in a hub most listed motorcycles
@@ -454,7 +461,7 @@ static wk_status test_pair(sim *S, const geo *gi, const geo *gj, uint32_t cell) 
             double t = j == B->id ? (dx * A->u.y - dy * A->u.x) / cr
                                   : (dx * B->u.y - dy * B->u.x) / cr;
             double dj = t < 0 ? 0 : t > gj->wall_len ? gj->wall_len : t;
-            if (S->m[j].len < dj - S->eps_d) return WK_OK;
+            if (gj->clen < dj - S->eps_d) return WK_OK;
         }
     }
     if (!(i < j ? meet_geo(S, gi, gj, &da, &db, &x) : meet_geo(S, gj, gi, &da, &db, &x)) ||
@@ -463,7 +470,7 @@ static wk_status test_pair(sim *S, const geo *gi, const geo *gj, uint32_t cell) 
     /* j crashed before x (for good: a crash length is final) makes the
     ** event a no-op whenever it comes (BEFORE, or a crashed loser): not
     ** pushed. */
-    if (S->crashed[j] && S->m[j].len < (j == a ? da : db) - S->eps_d) return WK_OK;
+    if (gj->clen < (j == a ? da : db) - S->eps_d) return WK_OK;
     return heap_push(S->R, &S->H, (mev){event_time(S, a, b, da, db), a, b});
 }
 
@@ -517,7 +524,7 @@ static wk_status index_add(sim *S, cell_list *L, uint32_t k) {
     line_key(&S->geo[L->e[k]], X->cx, X->cy, &th, &h);
     uint32_t b = bin_of(th, X->th0, X->dth, X->gt);
     uint32_t c = bin_of(h, -X->rho, 2.0 * X->rho / X->gh, X->gh);
-    X->line[k] = (ix_line){X->head[b * X->gh + c]};
+    X->line[k] = (ix_line){X->head[b * X->gh + c], L->e[k]};
     X->head[b * X->gh + c] = k;
     if (c < X->cmin[b]) X->cmin[b] = c;
     if (c > X->cmax[b]) X->cmax[b] = c;
@@ -644,7 +651,7 @@ static wk_status cell_scan(sim *S, cell_list *L, uint32_t cell, const geo *gi) {
         if (c1 > X->cmax[b]) c1 = X->cmax[b];
         for (uint32_t c = c0; c <= c1; c++)
             for (uint32_t k = X->head[b * X->gh + c]; k != WK_NONE; k = X->line[k].next)
-                if (test_pair(S, gi, &S->geo[L->e[k]], cell) != WK_OK) return WK_ENOMEM;
+                if (test_pair(S, gi, &S->geo[X->line[k].id], cell) != WK_OK) return WK_ENOMEM;
     }
     return WK_OK;
 }
