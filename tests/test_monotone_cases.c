@@ -22,6 +22,8 @@
 **     more weights (the stress sweep's collinear_mixed class): 001's path,
 **     equal to naive under both collinear rules (each swept piece's face is
 **     the winner that extends over it, as naive's wf_collinear_rule says);
+**   - tests/data/degenerate/mono_snap_*.wpoly (the lead's walk generator):
+**     001's path, no reference fallback, equal to naive;
 **   - far from the origin: convex polygons of diagonal 1 at (849367,
 **     527803) and combs of size 1e-3 at (1e6, -2e6), turned: equal to
 **     naive, and the combs not refused (the variant computes relative to
@@ -546,4 +548,38 @@ Test(monotone_cases, cliff_family_no_fallback, .timeout = 600) {
 /* The family small enough for naive everywhere: equal skeletons. */
 Test(monotone_cases, cliff_family_equals_naive, .timeout = 600) {
     for (uint64_t seed = 1; seed <= 3; seed++) cliff_case(2000, seed, 0, 1998, true);
+}
+
+/* ------------------------------------------- a snap over a reflex trace */
+
+/* tests/data/degenerate/mono_snap_*.wpoly: a window of the lead's
+** independent monotone generator (mono_gen.py 10^6 seed 8, walk, issue 11)
+** and its 11-vertex reduction.  merge.c moved M''s next vertex from the
+** crossing of a trace to the exact meeting point of its three offset lines,
+** 12 to 15 units further along M' (the trace, between upper edges 0.0014
+** rad apart, lies that far off their exact bisector), and so over a reflex
+** vertex's trace of the lower chain a few units ahead; the walk never
+** crossed it and ended "nowhere": both went to the reference
+** (reference_fallbacks 1, the whole 10^6 polygon about an hour).  Now
+** 001's path, and equal to naive. */
+Test(monotone_cases, snap_keeps_wall_order) {
+    static const char *const names[] = {"mono_snap_skips_wall", "mono_snap_window"};
+    uint32_t ran = 0;
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        char rel[128], path[512];
+        snprintf(rel, sizeof rel, "degenerate/%s.wpoly", names[i]);
+        data_path(path, sizeof path, rel);
+        wk_run R;
+        wk_run_init(&R);
+        wk_polygon *P = NULL;
+        cr_assert_eq(wk_polygon_read_file(&R, path, &P), WK_OK, "%s: %s", path, R.err.msg);
+        outcome o = solve_checked(P, names[i], true);
+        cr_expect_eq(o.st, WK_OK);
+        cr_expect(o.compared, "%s: not compared with naive", names[i]);
+        cr_expect_eq(o.fallbacks, 0, "%s: went to the reference wavefront", names[i]);
+        wk_polygon_free(&R, P);
+        ASSERT_CLEAN_CLOSE(R);
+        ran++;
+    }
+    cr_assert_eq(ran, 2);
 }

@@ -278,6 +278,41 @@ static void walk_face(const walk *W, uint32_t c, uint32_t e, hit *best) {
               kappa, best);
 }
 
+/* May M''s next vertex move from the crossing the walk found (best, along
+** the ray) to q, the exact meeting point of the three offset lines?  Only
+** if no other wall of the two faces is crossed on the way: the walk goes on
+** from the new vertex and looks ahead only, so a wall passed by the snap
+** would never be crossed, and M' would run on inside a face it has left.
+** A trace between two nearly parallel edges (two upper edges 0.0014 rad
+** apart) lies up to WK_MONO_EXACT_SLACK * eps_d off the exact bisector of
+** its edges: its start node joins two collapses whose times differ by less
+** than eps_d, and that time difference over the sine of the angle puts the
+** node 17.6 off the lines' meeting point at eps_d = 0.05, as naive's
+** node is.  A snap to the exact point then jumped 15 units along M', over
+** a reflex vertex's trace 6.7 units ahead; M' ran on in the face it had
+** left and ended "nowhere" (tests/data/monotone/walk_snap_skips_wall.wpoly,
+** a window of mono_gen.py 10^6 seed 8: the variant fell back to the
+** reference, about an hour at that n).  A snap back behind the current
+** vertex is refused too (M' would turn back).  When refused, the vertex
+** stays where the ray crosses the trace as the chain built it, which is
+** what the assembly clips that trace at.  Costs a second look at the two
+** faces' walls, only for snaps longer than eps_d. */
+static bool snap_keeps_order(const walk *W, const hit *best, wk_point X, wk_point q) {
+    const mono *M = W->M;
+    if (hypot(q.x - X.x, q.y - X.y) <= M->eps_d) return true; /* nothing can lie between */
+    double lq = dot(sub(q, W->p), W->dir);
+    if (lq < -M->eps_d) return false;
+    if (lq <= best->lambda) return true; /* back along the ray, not behind p: passes nothing */
+    if (W->n_excl == CLUSTER_MAX) return false;
+    walk V = *W; /* the same walk with best's trace crossed */
+    V.excl_c[V.n_excl] = best->chain;
+    V.excl_v[V.n_excl++] = best->trace;
+    hit other = {lq - M->eps_d, 0, WK_NONE, WK_NONE, WK_NONE, INFINITY};
+    walk_face(&V, 1, V.face[1], &other);
+    walk_face(&V, 0, V.face[0], &other);
+    return other.chain == WK_NONE;
+}
+
 static wk_status add_mnode(mono *M, wk_point p, double t, uint32_t sk, uint32_t *id) {
     if (WK_GROW(M->R, M->mn, M->cap_mn, M->n_mn + 1) != WK_OK) return M->R->err.code;
     memset(&M->mn[M->n_mn], 0, sizeof M->mn[0]);
@@ -373,7 +408,8 @@ wk_status wk_mono_merge(mono *M) {
         wk_point q;
         double tq;
         if (wk_three_lines_meet(Lu, Lb, &M->L[best.face], &q, &tq) &&
-            hypot(q.x - X.x, q.y - X.y) <= WK_MONO_EXACT_SLACK * M->eps_d && tq >= 0) {
+            hypot(q.x - X.x, q.y - X.y) <= WK_MONO_EXACT_SLACK * M->eps_d && tq >= 0 &&
+            snap_keeps_order(&W, &best, X, q)) {
             X = q;
             t = tq;
         }
