@@ -103,6 +103,25 @@ wk_status wf_push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint3
 
 /* ---------------------------------------------------------- candidates */
 
+/* True if input vertex u can never reach the line of edge e: it lies
+** strictly behind e's input line (exact test) and moves away from it
+** (relative to the line, which moves forward at its weight), so it stays
+** behind at every t.  Such a vertex is within eps_g of a piece of e only
+** because the input puts it there: a vertex 6e-6 beyond a non-adjacent edge
+** of a needle 1e6 long, the gap between them outside the polygon.  Forcing
+** it onto the piece made the gap interior and left a cycle in the skeleton
+** (tests/data/fuzz/needle_vertex_beyond_edge.wpoly).  A vertex that meets a
+** piece comes from its front.  Only input vertices: a constructed vertex's
+** place is a node eps_g wide, and one eps_g behind the line is not near the
+** piece anyway.  The split test asks it too (wk_wf_split_test). */
+bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
+    const wk_polygon *P = W->P;
+    if (u >= P->n || W->v[u].t0 != 0) return false;
+    if (wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
+    const wk_offset_line *L = &W->L[e];
+    return L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
+}
+
 /* Replace a kinematic estimate (t, p) of the event where offset lines e1,
 ** e2, e3 meet by their exact meeting point when that system is well
 ** conditioned and agrees with the estimate: the event then depends on input
@@ -182,6 +201,14 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     ** PSLG has no contact but these: its nodes keep WK_PSLG_MIN_CLEARANCE_REL
     ** (above eps_d) from the edges not at them.  No split. */
     if (W->P->pslg && V->t0 == 0 && wk_offset_distance(L, V->p0, 0) <= W->eps_d) return;
+    /* An input vertex strictly behind the piece's input line, moving away
+    ** from it, is within eps_d of it only because the input puts it there
+    ** (a crack outside the polygon between them): no split, however close.
+    ** A vertex 1.2 units beyond a needle's edge (at a scale of 1e13, eps_d
+    ** 1e4) split it at t = 0 and closed a cycle, where the edge across the
+    ** crack on its front side is the one it meets
+    ** (tests/data/fuzz/invalid_weighted_needles_hexfloat.wpoly). */
+    if (wf_never_reaches_line(W, vi, A->eout)) return;
     wk_point pv = wk_wf_pos(V, W->t_now);
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
@@ -212,6 +239,19 @@ static wk_status schedule(wk_wavefront *W, uint32_t vi) {
     }
     if (t < W->t_now) t = W->t_now;
     return wk_event_queue_set(W->R, &W->Q, vi, (wk_event_key){t, V->ev_kind});
+}
+
+/* The speed that matters for vi's candidate: its own, and for an edge
+** event the faster of the piece's two ends. */
+static double event_speed(const wk_wavefront *W, uint32_t vi) {
+    const wk_wf_vertex *V = &W->v[vi];
+    double s = fabs(V->vel.x) + fabs(V->vel.y);
+    if (V->ev_kind == WK_WF_EDGE) {
+        const wk_wf_vertex *B = &W->v[V->next];
+        double sb = fabs(B->vel.x) + fabs(B->vel.y);
+        if (sb > s) s = sb;
+    }
+    return s;
 }
 
 /* Full recomputation of vi's candidate: its edge event and, if reflex, the
@@ -475,13 +515,33 @@ static wk_status simulate(wk_wavefront *W) {
         W->t_now = W->t_group = t;
         W->n_seeds = 0;
         if (wf_push_u32(R, &W->seeds, &W->n_seeds, &W->cap_seeds, first) != WK_OK) return R->err.code;
+        W->t_last = t;
+        W->n_deferred = 0;
         while (W->Q.size) {
             uint32_t id = wk_event_queue_peek(&W->Q);
-            if (W->Q.key[id].time > t + W->eps_t) break;
+            double te = W->Q.key[id].time;
+            if (te > t + W->eps_t) break;
             wk_event_queue_pop(R, &W->Q);
+            /* Simultaneous means within eps_t, as long as the vertices of
+            ** the event move less than eps_d in between: a vertex of speed
+            ** s covers s (te - t), and one faster than WK_TOL_TIME^-1 wmax
+            ** would be resolved where it is not yet.  Such an event waits
+            ** for its own group (the tip of a needle 1e6 long, speed 1e12,
+            ** reaching the slow end of its needle 4e-11 after the other
+            ** tip event and 39 units away; a reflex vertex of speed 4e5
+            ** resolved 9e-6 early, 3.6 units short of the piece it splits:
+            ** tests/data/fuzz/invalid_naive_h_needles.wpoly). */
+            if ((te - t) * event_speed(W, id) > W->eps_d) {
+                if (wf_push_u32(R, &W->deferred, &W->n_deferred, &W->cap_deferred, id) != WK_OK)
+                    return R->err.code;
+                continue;
+            }
+            if (te > W->t_last) W->t_last = te;
             if (wf_push_u32(R, &W->seeds, &W->n_seeds, &W->cap_seeds, id) != WK_OK)
                 return R->err.code;
         }
+        for (uint32_t i = 0; i < W->n_deferred; i++)
+            if (schedule(W, W->deferred[i]) != WK_OK) return R->err.code;
         if (process_group(W, t) != WK_OK) return R->err.code;
     }
     /* A PSLG's outer wavefront never vanishes: what is alive at the
@@ -542,6 +602,7 @@ done:
     WK_FREE_ARRAY(R, W.run, W.cap_run);
     WK_FREE_ARRAY(R, W.run_node, W.cap_run_node);
     WK_FREE_ARRAY(R, W.dead, W.cap_dead);
+    WK_FREE_ARRAY(R, W.deferred, W.cap_deferred);
     if (st != WK_OK) {
         wk_skeleton_free(R, W.S);
         return st;

@@ -35,6 +35,7 @@
 */
 #include "wavefront_internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -274,10 +275,14 @@ static wk_status plan_nodes(wk_wavefront *W, double t) {
 static void plan_arrivals(wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < W->n_comp; i++) {
         wk_wf_vertex *u = &W->v[W->comp[i]];
-        /* within the time tolerance a vertex covers |vel| eps_t: a fast
-        ** vertex that close to a node arrives there in the same instant */
+        /* within the group's time span (its seeds' times, t .. t_last <=
+        ** t + eps_t) a vertex covers |vel| (t_last - t): a fast vertex that
+        ** close to a node arrives there in the same instant.  Not |vel|
+        ** eps_t: a reflex vertex of speed 4e5 then arrived at a node 2.4
+        ** units away, in a group of one event (invalid_naive_h_needles) */
         double speed = fabs(u->vel.x) + fabs(u->vel.y);
-        u->at = find_cluster_within(W, wk_wf_pos(u, t), W->eps_g + speed * W->eps_t * (W->eps_g / W->eps_d));
+        u->at = find_cluster_within(W, wk_wf_pos(u, t),
+                                    W->eps_g + speed * (W->t_last - t) * (W->eps_g / W->eps_d));
     }
     /* a free vertex whose two neighbours arrive at the same node closes a
     ** triangle of zero size with it: it arrives too */
@@ -320,6 +325,29 @@ static bool local_walk_suffices(const wk_wavefront *W, double t) {
     return true;
 }
 
+/* True if node k, off (< 0: behind) from the line L of a piece, only
+** looks like it touches the piece: it lies clearly behind the line (more
+** than the rounding of its place, WK_BEHIND_ULPS ulps of its coordinates)
+** and no vertex arriving at it comes from the line's front (each moves
+** away from the line, along it, or towards it from behind).  A node that
+** meets a piece is reached from the piece's interior side.  The collapse
+** of a needle 2e-6 wide, 1.2e-5 behind a non-adjacent edge across a crack
+** outside the polygon, pinched that edge and closed a cycle
+** (tests/data/fuzz/invalid_naive_h_needles.wpoly). */
+static bool node_behind_piece(const wk_wavefront *W, uint32_t k, const wk_offset_line *L,
+                              double off, wk_point q) {
+    double ulp = DBL_EPSILON * (fabs(q.x) + fabs(q.y));
+    if (!(off < -WK_BEHIND_ULPS * ulp)) return false;
+    bool any = false;
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        const wk_wf_vertex *u = &W->v[W->comp[i]];
+        if (u->at != k) continue;
+        any = true;
+        if (L->nx * u->vel.x + L->ny * u->vel.y - L->w < 0) return false;
+    }
+    return any;
+}
+
 /* Step 2b: a node inside a piece cuts it (a pinch). */
 static wk_status plan_pinches(wk_wavefront *W, double t) {
     wk_run *R = W->R;
@@ -339,6 +367,7 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
             if (s < -W->eps_g || s > len + W->eps_g) continue;
             double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
             if (fabs(off) > W->eps_g) continue;
+            if (node_behind_piece(W, k, L, off, q)) continue;
             /* A node on the line within tolerance of an end of the piece: that
             ** end arrives at the node (else the node would touch the piece
             ** without cutting it, and the group would change nothing). */
@@ -461,31 +490,12 @@ static wk_status plan_cancel(wk_wavefront *W) {
     return WK_OK;
 }
 
-/* True if input vertex u can never reach the line of edge e: it lies
-** strictly behind e's input line (exact test) and moves away from it
-** (relative to the line, which moves forward at its weight), so it stays
-** behind at every t.  Such a vertex is within eps_g of a piece of e only
-** because the input puts it there: a vertex 6e-6 beyond a non-adjacent edge
-** of a needle 1e6 long, the gap between them outside the polygon.  Forcing
-** it onto the piece made the gap interior and left a cycle in the skeleton
-** (tests/data/fuzz/needle_vertex_beyond_edge.wpoly).  A vertex that meets a
-** piece comes from its front.  Only input vertices: a constructed vertex's
-** place is a node eps_g wide, and one eps_g behind the line is not near the
-** piece anyway. */
-static bool never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
-    const wk_polygon *P = W->P;
-    if (u >= P->n || W->v[u].t0 != 0) return false;
-    if (wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
-    const wk_offset_line *L = &W->L[e];
-    return L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
-}
-
 /* Step 5a: vertices that meet the group without being at a node yet.  An
 ** untouched vertex whose pieces both lead to the same node closes a
 ** triangle of no area with it; an untouched vertex lying on a sub-piece
 ** between two nodes (where parallel edges met: an end of a collinear step
 ** of the other side) meets it too, unless it is an input vertex that
-** never reaches the piece's line (never_reaches_line).  Each becomes a node
+** never reaches the piece's line (wf_never_reaches_line).  Each becomes a node
 ** (*again). */
 static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
@@ -515,7 +525,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
             double sq = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
             if (sq <= -W->eps_g || sq >= len + W->eps_g || fabs(off) > W->eps_g) continue;
-            if (never_reaches_line(W, W->comp[j], x->edge)) continue;
+            if (wf_never_reaches_line(W, W->comp[j], x->edge)) continue;
             if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, W->comp[j]) != WK_OK)
                 return R->err.code;
             *again = true;

@@ -84,6 +84,8 @@ struct wk_wavefront {
     uint32_t stamp;
     /* group scratch, kept between groups */
     uint32_t *seeds; uint32_t n_seeds, cap_seeds;
+    uint32_t *deferred; uint32_t n_deferred, cap_deferred; /* events within eps_t left for a later group */
+    double t_last;     /* the latest seed time of the group (t <= t_last <= t + eps_t) */
     uint32_t *forced; uint32_t n_forced, cap_forced;
     uint32_t *comp; uint32_t n_comp, cap_comp;
     wk_wf_cluster *cl; uint32_t n_cl, cap_cl;
@@ -135,6 +137,10 @@ double wf_event_limit(const wk_wavefront *W);
 /* --until within the input domain (WK_PSLG_MAX_HORIZON_REL); WK_EINPUT. */
 wk_status wf_check_horizon(const wk_wavefront *W);
 
+/* True if input vertex u (still at t0 = 0) lies strictly behind edge e's
+** input line (exact test) and moves away from it: it never reaches e's
+** offset line (wavefront.c). */
+bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e);
 /* wavefront_group.c: resolve the group of events seeded by W->seeds at
 ** time t (W->fresh and W->dead list what it created and ended). */
 wk_status wf_resolve_group(wk_wavefront *W, double t);
