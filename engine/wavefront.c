@@ -129,9 +129,11 @@ bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
 static void refine(const wk_wavefront *W, const wk_wf_vertex *V, uint32_t e1, uint32_t e2, uint32_t e3,
                    double *t, wk_point *p) {
     if (e1 == e2 || e2 == e3 || e1 == e3 || V->vkind != WK_VEL_REGULAR) return;
+    /* the lines from the input points in long double (kinetics.h): the
+    ** double lines W->L can be off by far more than eps_t there */
     wk_point q;
     double tq;
-    if (!wk_three_lines_meet(&W->L[e1], &W->L[e2], &W->L[e3], &q, &tq)) return;
+    if (!wk_three_edges_meet(W->P, e1, e2, e3, W->origin, &q, &tq)) return;
     double speed = fabs(V->vel.x) + fabs(V->vel.y);
     double dslack = WK_REFINE_DIST_SLACK * W->eps_d;
     if (fabs(tq - *t) > WK_REFINE_TIME_SLACK * W->eps_t ||
@@ -530,7 +532,7 @@ static wk_status simulate(wk_wavefront *W) {
             ** reaching the slow end of its needle 4e-11 after the other
             ** tip event and 39 units away; a reflex vertex of speed 4e5
             ** resolved 9e-6 early, 3.6 units short of the piece it splits:
-            ** tests/data/fuzz/invalid_naive_h_needles.wpoly). */
+            ** the fuzz finding of an H at 1e6 with needles 1e5..8e6 long, issue 11). */
             if ((te - t) * event_speed(W, id) > W->eps_d) {
                 if (wf_push_u32(R, &W->deferred, &W->n_deferred, &W->cap_deferred, id) != WK_OK)
                     return R->err.code;

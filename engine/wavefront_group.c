@@ -279,7 +279,7 @@ static void plan_arrivals(wk_wavefront *W, double t) {
         ** t + eps_t) a vertex covers |vel| (t_last - t): a fast vertex that
         ** close to a node arrives there in the same instant.  Not |vel|
         ** eps_t: a reflex vertex of speed 4e5 then arrived at a node 2.4
-        ** units away, in a group of one event (invalid_naive_h_needles) */
+        ** units away, in a group of one event (the same H with needles) */
         double speed = fabs(u->vel.x) + fabs(u->vel.y);
         u->at = find_cluster_within(W, wk_wf_pos(u, t),
                                     W->eps_g + speed * (W->t_last - t) * (W->eps_g / W->eps_d));
@@ -333,7 +333,7 @@ static bool local_walk_suffices(const wk_wavefront *W, double t) {
 ** meets a piece is reached from the piece's interior side.  The collapse
 ** of a needle 2e-6 wide, 1.2e-5 behind a non-adjacent edge across a crack
 ** outside the polygon, pinched that edge and closed a cycle
-** (tests/data/fuzz/invalid_naive_h_needles.wpoly). */
+** (the fuzz finding of an H at 1e6 with needles 1e5..8e6 long, issue 11). */
 static bool node_behind_piece(const wk_wavefront *W, uint32_t k, const wk_offset_line *L,
                               double off, wk_point q) {
     double ulp = DBL_EPSILON * (fabs(q.x) + fabs(q.y));
