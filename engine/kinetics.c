@@ -116,6 +116,46 @@ bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
     return isfinite(p->x) && isfinite(p->y) && isfinite(*t);
 }
 
+bool wk_three_edges_meet(const wk_polygon *P, uint32_t e1, uint32_t e2, uint32_t e3, wk_point o,
+                         wk_point *p, double *t) {
+    /* rows (nx, ny, -w) . (x, y, t) = c, each line built from the input
+    ** points in long double: n's rounding times the distance from the
+    ** midpoint to the event is then 2^-64, not 2^-53, of that distance */
+    typedef long double ld;
+    const uint32_t e[3] = {e1, e2, e3};
+    ld m[3][3], r[3];
+    double scale = 0;
+    for (int i = 0; i < 3; i++) {
+        wk_point a = P->p[e[i]], b = P->p[wk_polygon_next(P, e[i])], d = wk_polygon_edge_dir(P, e[i]);
+        ld len = sqrtl((ld)d.x * d.x + (ld)d.y * d.y);
+        ld nx = -(ld)d.y / len, ny = (ld)d.x / len;
+        ld mx = 0.5L * (((ld)a.x - o.x) + ((ld)b.x - o.x));
+        ld my = 0.5L * (((ld)a.y - o.y) + ((ld)b.y - o.y));
+        m[i][0] = nx;
+        m[i][1] = ny;
+        m[i][2] = -(ld)P->w[e[i]];
+        r[i] = nx * mx + ny * my;
+        scale += P->w[e[i]];
+    }
+    ld det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+             m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    if (!(fabsl(det) > WK_MEET_DET_REL * scale)) return false;
+    ld dx = r[0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+            m[0][1] * (r[1] * m[2][2] - m[1][2] * r[2]) +
+            m[0][2] * (r[1] * m[2][1] - m[1][1] * r[2]);
+    ld dy = m[0][0] * (r[1] * m[2][2] - m[1][2] * r[2]) -
+            r[0] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+            m[0][2] * (m[1][0] * r[2] - r[1] * m[2][0]);
+    ld dt = m[0][0] * (m[1][1] * r[2] - r[1] * m[2][1]) -
+            m[0][1] * (m[1][0] * r[2] - r[1] * m[2][0]) +
+            r[0] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    p->x = (double)(dx / det);
+    p->y = (double)(dy / det);
+    *t = (double)(dt / det);
+    return isfinite(p->x) && isfinite(p->y) && isfinite(*t);
+}
+
 wk_velocity_kind wk_vertex_start(const wk_offset_line *L, uint32_t ein, uint32_t eout, wk_point p,
                                  double t, double snap, wk_point *p0, wk_point *vel, bool *reflex) {
     wk_velocity_kind k = wk_vertex_velocity(&L[ein], &L[eout], vel);

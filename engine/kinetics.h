@@ -67,6 +67,17 @@ wk_velocity_kind wk_vertex_start(const wk_offset_line *L, uint32_t ein, uint32_t
 
 bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
                          const wk_offset_line *c, wk_point *p, double *t);
+/* The same for input edges e1, e2, e3 of P, in coordinates relative to o,
+** with the lines built from the input points in long double: the offset
+** lines of wk_offset_line_of_edge_at carry the rounding of their unit
+** normal (2^-53) times the distance from the edge's midpoint, and where two
+** of the three lines are nearly parallel the meeting point moves by that
+** over their sine.  An H with a needle (TestNeedles in
+** tests/test_cgal_agreement.py): an edge 1e6 long, its midpoint 5e5 from
+** the event, at a sine of 5e-6 to another edge: wk_three_lines_meet on the
+** double lines put the event 5.5e-6 early (5 eps_t), this 4.7e-10 early. */
+bool wk_three_edges_meet(const wk_polygon *P, uint32_t e1, uint32_t e2, uint32_t e3, wk_point o,
+                         wk_point *p, double *t);
 /* True if turning from edge direction a to edge direction b is a right turn
 ** (the vertex between them is reflex).  Exact on the input directions. */
 bool wk_is_reflex_turn(const wk_offset_line *a, const wk_offset_line *b);

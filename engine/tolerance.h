@@ -105,6 +105,13 @@
 ** planned again with the radius doubled, up to this many eps_d (256 eps_d
 ** is still 4 times below the validator's default tolerance). */
 #define WK_GROUP_WIDEN_MAX 256.0
+/* A node of a group lies clearly behind a piece's line (node_behind_piece
+** in wavefront_group.c) when it is more than this many ulps of its
+** coordinates behind it: a node's place is a constructed point, off by a few
+** ulps of its size (more for a fast vertex, which arrives at the node of a
+** slow one, not where it is); 1024 ulps is 9e-10 at 4e6 from the centre,
+** far below the 1.2e-5 gap of the case that needs it and eps_d (9e-3). */
+#define WK_BEHIND_ULPS 1024.0
 /* A cycle is flat (collapse_flat_cycle) when all its vertices lie within
 ** this many eps_d of one line: the group resolution, working with nodes
 ** eps_d apart, can leave such a cycle up to a few hundred eps_d thin. */

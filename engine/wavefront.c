@@ -95,9 +95,12 @@ wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk) {
 ** the vertex of a hole 1e-10 from another hole's vertex (taken as a split
 ** at t = 0 it joined the holes as if they touched, and the wavefront went
 ** round in circles: tests/data/fuzz/ealgo_holes_vertices_1e-10_apart.wpoly).
-** A vertex that meets a piece comes from its front.  Only input vertices:
-** a constructed vertex's place is a node eps_d wide, and one eps_d behind
-** the line is not near the piece anyway. */
+** A vertex that meets a piece comes from its front.  It never reaches the
+** line when it lies strictly behind e's input line (exact test) and moves
+** away from it (relative to the line, which moves forward at its weight).
+** Only input vertices: a constructed vertex's place is a node eps_d wide,
+** and one eps_d behind the line is not near the piece anyway.  The split
+** test asks it too (wk_wf_split_test). */
 bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     const wk_polygon *P = W->P;
     if (u >= P->n || W->v[u].t0 != 0) return false;
@@ -159,9 +162,11 @@ wk_status wf_push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint3
 static void refine(const wk_wavefront *W, const wk_wf_vertex *V, uint32_t e1, uint32_t e2, uint32_t e3,
                    double *t, wk_point *p) {
     if (e1 == e2 || e2 == e3 || e1 == e3 || V->vkind != WK_VEL_REGULAR) return;
+    /* the lines from the input points in long double (kinetics.h): the
+    ** double lines W->L can be off by far more than eps_t there */
     wk_point q;
     double tq;
-    if (!wk_three_lines_meet(&W->L[e1], &W->L[e2], &W->L[e3], &q, &tq)) return;
+    if (!wk_three_edges_meet(W->P, e1, e2, e3, W->origin, &q, &tq)) return;
     double speed = fabs(V->vel.x) + fabs(V->vel.y);
     double dslack = WK_REFINE_DIST_SLACK * W->eps_d;
     if (fabs(tq - *t) > WK_REFINE_TIME_SLACK * W->eps_t ||
@@ -231,16 +236,17 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     ** PSLG has no contact but these: its nodes keep WK_PSLG_MIN_CLEARANCE_REL
     ** (above eps_d) from the edges not at them.  No split. */
     if (W->P->pslg && V->t0 == 0 && wk_offset_distance(L, V->p0, 0) <= W->eps_d) return;
+    /* An input vertex strictly behind the piece's input line, moving away
+    ** from it, is within eps_d of it only because the input puts it there
+    ** (a crack outside the polygon between them): no split, however close.
+    ** A vertex 1.2 units beyond a needle's edge (at a scale of 1e13, eps_d
+    ** 1e4) split it at t = 0 and closed a cycle, where the edge across the
+    ** crack on its front side is the one it meets
+    ** (tests/data/fuzz/invalid_weighted_needles_hexfloat.wpoly). */
+    if (wf_never_reaches_line(W, vi, A->eout)) return;
     wk_point pv = wk_wf_pos(V, W->t_now);
     double d0 = wk_offset_distance(L, pv, W->t_now);
     if (d0 < -W->eps_d) return; /* already beyond the line: moving away */
-    /* within eps_d behind it: an input vertex that lies behind the input
-    ** line of another ring (exact) never meets it (wf_never_reaches_line).
-    ** Within one ring such a vertex is a sub-tolerance feature resolved at
-    ** tolerance level (README): the chamfer vertices of 9.5e-12 at a reflex
-    ** corner (tests/data/degenerate/arr_chamfer_contact.wpoly) split on the
-    ** pieces across it. */
-    if (d0 < 0 && wf_other_ring(W, vi, A->eout) && wf_never_reaches_line(W, vi, A->eout)) return;
     double t = W->t_now + (d0 > 0 ? d0 : 0) / -rate;
     if (t > s->t) return;
     wk_point p = wk_wf_pos(V, t), pa = wk_wf_pos(A, t), pb = wk_wf_pos(B, t);
@@ -268,6 +274,19 @@ static wk_status schedule(wk_wavefront *W, uint32_t vi) {
     }
     if (t < W->t_now) t = W->t_now;
     return wk_event_queue_set(W->R, &W->Q, vi, (wk_event_key){t, V->ev_kind});
+}
+
+/* The speed that matters for vi's candidate: its own, and for an edge
+** event the faster of the piece's two ends. */
+static double event_speed(const wk_wavefront *W, uint32_t vi) {
+    const wk_wf_vertex *V = &W->v[vi];
+    double s = fabs(V->vel.x) + fabs(V->vel.y);
+    if (V->ev_kind == WK_WF_EDGE) {
+        const wk_wf_vertex *B = &W->v[V->next];
+        double sb = fabs(B->vel.x) + fabs(B->vel.y);
+        if (sb > s) s = sb;
+    }
+    return s;
 }
 
 /* Full recomputation of vi's candidate: its edge event and, if reflex, the
@@ -309,9 +328,9 @@ void wk_wf_offer_split(wk_wavefront *W, uint32_t vi, double t, wk_point p, uint3
     wk_wf_vertex *V = &W->v[vi];
     if (a == WK_NONE || !(t < V->ev_t)) return;
     /* The finders clamp a vertex up to eps_d behind the line to a split
-    ** now; an input vertex exactly behind the line of another ring never
-    ** meets it (as in wk_wf_split_test). */
-    if (vi < W->P->n && V->t0 == 0 && wf_other_ring(W, vi, W->v[a].eout) &&
+    ** now; an input vertex exactly behind the line never meets it (as in
+    ** wk_wf_split_test). */
+    if (vi < W->P->n && V->t0 == 0 &&
         wk_offset_distance(&W->L[W->v[a].eout], wk_wf_pos(V, W->t_now), W->t_now) < 0 &&
         wf_never_reaches_line(W, vi, W->v[a].eout))
         return;
@@ -538,13 +557,33 @@ static wk_status simulate(wk_wavefront *W) {
         W->t_now = W->t_group = t;
         W->n_seeds = 0;
         if (wf_push_u32(R, &W->seeds, &W->n_seeds, &W->cap_seeds, first) != WK_OK) return R->err.code;
+        W->t_last = t;
+        W->n_deferred = 0;
         while (W->Q.size) {
             uint32_t id = wk_event_queue_peek(&W->Q);
-            if (W->Q.key[id].time > t + W->eps_t) break;
+            double te = W->Q.key[id].time;
+            if (te > t + W->eps_t) break;
             wk_event_queue_pop(R, &W->Q);
+            /* Simultaneous means within eps_t, as long as the vertices of
+            ** the event move less than eps_d in between: a vertex of speed
+            ** s covers s (te - t), and one faster than WK_TOL_TIME^-1 wmax
+            ** would be resolved where it is not yet.  Such an event waits
+            ** for its own group (the tip of a needle 1e6 long, speed 1e12,
+            ** reaching the slow end of its needle 4e-11 after the other
+            ** tip event and 39 units away; a reflex vertex of speed 4e5
+            ** resolved 9e-6 early, 3.6 units short of the piece it splits:
+            ** the fuzz finding of an H at 1e6 with needles 1e5..8e6 long, issue 11). */
+            if ((te - t) * event_speed(W, id) > W->eps_d) {
+                if (wf_push_u32(R, &W->deferred, &W->n_deferred, &W->cap_deferred, id) != WK_OK)
+                    return R->err.code;
+                continue;
+            }
+            if (te > W->t_last) W->t_last = te;
             if (wf_push_u32(R, &W->seeds, &W->n_seeds, &W->cap_seeds, id) != WK_OK)
                 return R->err.code;
         }
+        for (uint32_t i = 0; i < W->n_deferred; i++)
+            if (schedule(W, W->deferred[i]) != WK_OK) return R->err.code;
         if (process_group(W, t) != WK_OK) return R->err.code;
     }
     /* A PSLG's outer wavefront never vanishes: what is alive at the
@@ -612,6 +651,7 @@ done:
     WK_FREE_ARRAY(R, W.run_node, W.cap_run_node);
     WK_FREE_ARRAY(R, W.dead, W.cap_dead);
     WK_FREE_ARRAY(R, W.shield, W.cap_shield);
+    WK_FREE_ARRAY(R, W.deferred, W.cap_deferred);
     if (st != WK_OK) {
         wk_skeleton_free(R, W.S);
         return st;

@@ -35,6 +35,7 @@
 */
 #include "wavefront_internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -354,10 +355,14 @@ static wk_status plan_shields(wk_wavefront *W, double t) {
 static void plan_arrivals(wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < W->n_comp; i++) {
         wk_wf_vertex *u = &W->v[W->comp[i]];
-        /* within the time tolerance a vertex covers |vel| eps_t: a fast
-        ** vertex that close to a node arrives there in the same instant */
+        /* within the group's time span (its seeds' times, t .. t_last <=
+        ** t + eps_t) a vertex covers |vel| (t_last - t): a fast vertex that
+        ** close to a node arrives there in the same instant.  Not |vel|
+        ** eps_t: a reflex vertex of speed 4e5 then arrived at a node 2.4
+        ** units away, in a group of one event (the same H with needles) */
         double speed = fabs(u->vel.x) + fabs(u->vel.y);
-        u->at = find_cluster_within(W, wk_wf_pos(u, t), W->eps_g + speed * W->eps_t * (W->eps_g / W->eps_d));
+        u->at = find_cluster_within(W, wk_wf_pos(u, t),
+                                    W->eps_g + speed * (W->t_last - t) * (W->eps_g / W->eps_d));
         if (u->at != WK_NONE && W->n_shield && shield_of(W, W->comp[i], u->at)) u->at = WK_NONE;
     }
     /* a free vertex whose two neighbours arrive at the same node closes a
@@ -401,6 +406,29 @@ static bool local_walk_suffices(const wk_wavefront *W, double t) {
     return true;
 }
 
+/* True if node k, off (< 0: behind) from the line L of a piece, only
+** looks like it touches the piece: it lies clearly behind the line (more
+** than the rounding of its place, WK_BEHIND_ULPS ulps of its coordinates)
+** and no vertex arriving at it comes from the line's front (each moves
+** away from the line, along it, or towards it from behind).  A node that
+** meets a piece is reached from the piece's interior side.  The collapse
+** of a needle 2e-6 wide, 1.2e-5 behind a non-adjacent edge across a crack
+** outside the polygon, pinched that edge and closed a cycle
+** (the fuzz finding of an H at 1e6 with needles 1e5..8e6 long, issue 11). */
+static bool node_behind_piece(const wk_wavefront *W, uint32_t k, const wk_offset_line *L,
+                              double off, wk_point q) {
+    double ulp = DBL_EPSILON * (fabs(q.x) + fabs(q.y));
+    if (!(off < -WK_BEHIND_ULPS * ulp)) return false;
+    bool any = false;
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        const wk_wf_vertex *u = &W->v[W->comp[i]];
+        if (u->at != k) continue;
+        any = true;
+        if (L->nx * u->vel.x + L->ny * u->vel.y - L->w < 0) return false;
+    }
+    return any;
+}
+
 /* Step 2b: a node inside a piece cuts it (a pinch). */
 static wk_status plan_pinches(wk_wavefront *W, double t) {
     wk_run *R = W->R;
@@ -420,6 +448,7 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
             if (s < -W->eps_g || s > len + W->eps_g) continue;
             double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
             if (fabs(off) > W->eps_g) continue;
+            if (node_behind_piece(W, k, L, off, q)) continue;
             /* A node on the line within tolerance of an end of the piece: that
             ** end arrives at the node (else the node would touch the piece
             ** without cutting it, and the group would change nothing).  A

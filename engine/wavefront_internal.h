@@ -89,6 +89,8 @@ struct wk_wavefront {
     uint32_t stamp;
     /* group scratch, kept between groups */
     uint32_t *seeds; uint32_t n_seeds, cap_seeds;
+    uint32_t *deferred; uint32_t n_deferred, cap_deferred; /* events within eps_t left for a later group */
+    double t_last;     /* the latest seed time of the group (t <= t_last <= t + eps_t) */
     uint32_t *forced; uint32_t n_forced, cap_forced;
     uint32_t *comp; uint32_t n_comp, cap_comp;
     wk_wf_cluster *cl; uint32_t n_cl, cap_cl;

@@ -510,6 +510,110 @@ class TestHandMade(unittest.TestCase):
             shutil.rmtree(work, ignore_errors=True)
 
 
+# ------------------------------------------------- needles far out
+
+NEEDLE_CASES = int(os.environ.get("WSKEL_CGAL_NEEDLES", "60"))
+
+
+def _orient(a, b, c):
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+
+def _segments_meet(a, b, c, d):
+    """Closed segments ab and cd share a point (exact on Fractions)."""
+    o1, o2, o3, o4 = _orient(a, b, c), _orient(a, b, d), _orient(c, d, a), _orient(c, d, b)
+    if ((o1 > 0) != (o2 > 0) or o1 == 0 or o2 == 0) and \
+       ((o3 > 0) != (o4 > 0) or o3 == 0 or o4 == 0):
+        if o1 == o2 == 0:  # collinear: overlap of the projections
+            k = 0 if a[0] != b[0] or c[0] != d[0] else 1
+            lo1, hi1 = sorted((a[k], b[k]))
+            lo2, hi2 = sorted((c[k], d[k]))
+            return max(lo1, lo2) <= min(hi1, hi2)
+        return (o1 == 0 or o2 == 0 or (o1 > 0) != (o2 > 0)) and \
+               (o3 == 0 or o4 == 0 or (o3 > 0) != (o4 > 0))
+    return False
+
+
+def simple_polygon(pts):
+    """True if the closed chain pts is simple (exact test; non-adjacent
+    edges share no point, adjacent ones only their vertex)."""
+    from fractions import Fraction
+    q = [(Fraction(x), Fraction(y)) for x, y in pts]
+    n = len(q)
+    if len(set(q)) != n:
+        return False
+    for i in range(n):
+        a, b = q[i], q[(i + 1) % n]
+        for j in range(i + 1, n):
+            c, d = q[j], q[(j + 1) % n]
+            if j == i + 1 or (i == 0 and j == n - 1):
+                # adjacent: they must not fold back onto each other
+                shared, other_i, other_j = (b, a, d) if j == i + 1 else (a, b, c)
+                if _orient(other_i, shared, other_j) == 0 and \
+                   (other_i[0] - shared[0]) * (other_j[0] - shared[0]) + \
+                   (other_i[1] - shared[1]) * (other_j[1] - shared[1]) > 0:
+                    return False
+                continue
+            if _segments_meet(a, b, c, d):
+                return False
+    return True
+
+
+def needle_shapes():
+    """The unit-featured shapes the needles are pulled from, at (1e6, 1e6)
+    as in the fuzz findings (tests/data/fuzz/invalid_*_h_needles.wpoly)."""
+    h = [(0, 0), (1, 0), (1, 2), (3, 2), (3, 0), (4, 0), (4, 6), (3, 6), (3, 4), (1, 4),
+         (1, 6), (0, 6)]
+    star = [(3 * math.cos(math.pi * i / 5 + 0.1) * (1 if i % 2 == 0 else 0.4),
+             3 * math.sin(math.pi * i / 5 + 0.1) * (1 if i % 2 == 0 else 0.4))
+            for i in range(10)]
+    star = [(round(x, 3), round(y, 3)) for x, y in star]
+    return {"h": h, "comb": comb(3), "star": star}
+
+
+def needle_polygon(rng, shape):
+    """shape at (1e6, 1e6) mutated as the fuzzer did: 1..3 vertices pulled
+    out into needles (one coordinate replaced by one 1e5..8e6 away,
+    log-uniform, rounded to 0..2 decimals; the other nudged by 0, 0.01, 1 or
+    1.01 units, which makes the needle's edges antiparallel to a sine of
+    1e-9 .. 1e-6) and 0..2 more moves: a vertex moved by a unit, or a
+    neighbour of the first tip moved onto the other's x or y (sines down to
+    1e-12); None if no simple one came up in 50 tries."""
+    base = [(1e6 + x, 1e6 + y) for x, y in shape]
+    for _ in range(50):
+        pts = list(base)
+        idx = rng.sample(range(len(pts)), rng.randint(1, 3) + rng.randint(0, 2))
+        for m, i in enumerate(idx):
+            x, y = pts[i]
+            nudge = rng.choice((0, 0.01, 1, 1.01, -0.01, -1)) if m < 3 else rng.choice((-1, 1))
+            if m < 3 and (m == 0 or rng.random() < 0.7):
+                far = math.exp(rng.uniform(math.log(1e5), math.log(8e6))) * rng.choice((-1, 1))
+                digits = rng.randint(0, 2)
+                if rng.random() < 0.5:
+                    x, y = round(max(1e3, 1e6 + far), digits), y + nudge
+                else:
+                    x, y = x + nudge, round(max(1e3, 1e6 + far), digits)
+            elif rng.random() < 0.5:
+                # a neighbour of the first needle's tip moved onto the line
+                # of the other one (both at one x or one y, as the fuzzer's
+                # unit moves did): the needle's sine drops to 1e-12 .. 1e-9
+                tip = idx[0]
+                j = rng.choice(((tip - 1) % len(pts), (tip + 1) % len(pts)))
+                k = (tip + 1) % len(pts) if j == (tip - 1) % len(pts) else (tip - 1) % len(pts)
+                xj, yj = pts[j]
+                xk, yk = pts[k]
+                pts[j] = (xk, yj) if rng.random() < 0.5 else (xj, yk)
+                continue
+            elif rng.random() < 0.5:
+                x += nudge
+            else:
+                y += nudge
+            pts[i] = (x, y)
+        if simple_polygon(pts):
+            return pts
+    return None
+
+
 def generate(family, n, seed, path):
     """Write wskel-gen's polygon to path.  Returns None or why it failed."""
     base = [WSKEL_GEN, family, "--n", str(n), "--seed", str(seed)]
@@ -689,6 +793,64 @@ def ring_orient(rings):
         left = (a > 0) == (k == 0)
         out += [1 if left else -1] * len(ring)
     return out
+
+
+# Known disagreements of TestNeedles at the default NEEDLE_CASES (case ->
+# why).  A listed case that agrees fails the test, so the list stays true.
+# They are the same before and after the needles fix of the group window:
+# sub-tolerance pieces between nearly parallel edges of one weight (a sine
+# of 7e-8 .. 5e-6) that CGAL keeps and the wavefront merges at eps_d; in
+# needle_h_22 (WSKEL_CGAL_NEEDLES=200) a piece of edge 8, 7e-8 long, lives
+# from t = 1 to 2 between edges 1 and 9 (sine 7.4e-8) and bends their arc
+# by a unit; the star cases differ in node times only.
+NEEDLES_KNOWN = {
+    "needle_h_07": "sub-tolerance piece between nearly parallel edges",
+    "needle_star_26": "node times",
+    "needle_h_40": "sub-tolerance piece between nearly parallel edges",
+    "needle_star_59": "node times",
+}
+
+
+class TestNeedles(unittest.TestCase):
+    """The fuzz findings' family (issue 11): an H, a comb and a star of unit
+    features at (1e6, 1e6) with 1..3 vertices pulled out into needles
+    1e5..8e6 long, NEEDLE_CASES polygons from a fixed seed (WSKEL_CGAL_NEEDLES),
+    naive against CGAL; known disagreements in NEEDLES_KNOWN, needles below
+    the input domain's sine (exit 1) not compared.  The fuzz findings of
+    this family (tests/data/fuzz/*needles*, *large_coordinates*) are checked
+    by tests/test_fuzz_findings.c."""
+
+    def test_needles_agree(self):
+        import random
+        need(WSKEL, WSKEL_CGAL)
+        rng = random.Random(11)
+        shapes = needle_shapes()
+        work = tempfile.mkdtemp(prefix="wskel-needles-")
+        try:
+            outcomes = []
+            for i in range(NEEDLE_CASES):
+                name = sorted(shapes)[i % len(shapes)]
+                pts = needle_polygon(rng, shapes[name])
+                case = "needle_%s_%02d" % (name, i)
+                if pts is None:
+                    outcomes.append(Outcome(case, "nogen", "no simple polygon in 50 tries"))
+                    continue
+                path = os.path.join(work, case + ".wpoly")
+                tl.write_wpoly(path, pts, comment="%s at 1e6 with needles, unit weights" % name)
+                o = agree(case, path, work)
+                if o.verdict == "differ" and "is a needle" in o.why and "exit 1" in o.why:
+                    # below WK_ANTIPARALLEL_SIN: outside the documented input
+                    # domain (README), refused on input as it must be
+                    o = Outcome(case, "skip", "input domain: " + o.why.split("wpoly:")[-1].strip())
+                elif case in NEEDLES_KNOWN and o.verdict == "differ":
+                    o = Outcome(case, "known", NEEDLES_KNOWN[case])
+                elif case in NEEDLES_KNOWN and o.verdict == "same":
+                    o = Outcome(case, "differ", "agrees with CGAL now: remove it from NEEDLES_KNOWN",
+                                path)
+                outcomes.append(o)
+            report(self, "CGAL agreement, needles at 1e6", outcomes)
+        finally:
+            shutil.rmtree(work, ignore_errors=True)
 
 
 class TestHoles(unittest.TestCase):

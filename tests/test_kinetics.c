@@ -399,6 +399,57 @@ Test(kinetics, three_lines_meet) {
     cr_assert_not(wk_three_lines_meet(&d, &e, &f, &p, &t));
 }
 
+/* Three edges of an H at 1e6 with a needle (TestNeedles needle_h_22 in
+** tests/test_cgal_agreement.py): edges 9 (x = 1000001, up), 10 (y =
+** 1000006, leftwards) and 11, 1e6 long from (1e6, 1000006) to (1000,
+** 1000001.01), at a sine of 5e-6 to edge 10.  Their offset lines meet at
+** p = (1000001 - t, 1000006 - t) with edge 11's condition n11 . (p - v11)
+** = t, i.e. t = 1 / (1 + |dy| / (L + |dx|)), (dx, dy) edge 11's direction
+** and L its length: a closed form with no cancellation, good to a few ulps.
+** The double lines of wk_offset_line_of_edge_at (anchored at the
+** midpoints, 5e5 away) gave t 5.5e-6 early through wk_three_lines_meet,
+** which the refinement of the wavefront took as the event (5 eps_t). */
+Test(kinetics, three_edges_meet_far_from_the_midpoints) {
+    static const double x[] = {1000, 1000000.99, 1000001, 1000003, 1000003, 1000003.99,
+                               1000004, 1000003, 1000003, 1000001, 1000001, 1000000};
+    static const double y[] = {1000001.01, 865441, 1000002, 1000002, 1000000, 637378,
+                               1000006, 1000006, 1000004, 1000004, 1000006, 1000006};
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = polygon(&R, 12, x, y, NULL);
+    cr_assert(P->p[11].x == 1000000 && P->p[0].x == 1000, "stored in input order");
+    double dx = P->p[0].x - P->p[11].x, dy = P->p[0].y - P->p[11].y; /* exact (Sterbenz) */
+    double t_exact = 1 / (1 + fabs(dy) / (hypot(dx, dy) + fabs(dx)));
+    wk_point o = wk_polygon_centre(P), q;
+    double t;
+    cr_assert(wk_three_edges_meet(P, 9, 10, 11, o, &q, &t));
+    /* long double lines: 2^-64 x 5e5 / 5e-6 = 5e-9 at worst (measured
+    ** 4.7e-10), 1000 times below the double lines' miss */
+    ASSERT_NEAR(t, t_exact, 5e-9);
+    ASSERT_NEAR(q.x + o.x, 1000001 - t_exact, 5e-9);
+    ASSERT_NEAR(q.y + o.y, 1000006 - t_exact, 5e-9);
+    /* the tolerance tells the two constructions apart: the double lines
+    ** miss by more than 1e-7 (measured: 5.5e-6) */
+    wk_offset_line l9, l10, l11;
+    wk_offset_line_of_edge_at(P, 9, o, &l9);
+    wk_offset_line_of_edge_at(P, 10, o, &l10);
+    wk_offset_line_of_edge_at(P, 11, o, &l11);
+    cr_assert(wk_three_lines_meet(&l9, &l10, &l11, &q, &t));
+    cr_assert_gt(fabs(t - t_exact), 1e-7, "double lines: t = %.17g, exact %.17g", t, t_exact);
+    /* weights enter as speeds: edge 10 at weight 2 meets the others where
+    ** each offset distance is its weight times t */
+    wk_polygon_free(&R, P);
+    double w[12] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 2, 1};
+    P = polygon(&R, 12, x, y, w);
+    cr_assert(wk_three_edges_meet(P, 9, 10, 11, o, &q, &t));
+    wk_offset_line_of_edge_at(P, 9, o, &l9);
+    wk_offset_line_of_edge_at(P, 10, o, &l10);
+    ASSERT_NEAR(wk_offset_distance(&l9, q, t), 0, 1e-9);
+    ASSERT_NEAR(wk_offset_distance(&l10, q, t), 0, 1e-9);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
+
 /* ---------------------------------------------------- wk_vertex_start */
 
 Test(kinetics, vertex_start_snaps_regular_vertices) {
