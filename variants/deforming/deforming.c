@@ -1,18 +1,16 @@
 /*
 ** deforming.c: the deforming-polygon variant (paper 004): the wavefront
 ** as a polygon whose vertices move at constant velocity, advanced by
-** predictor steps (predict.c), corrected back to the earliest event of a
-** step and changed there (resolve.c), until every cycle has vanished.
+** a kinetic search over predictor windows (predict.c), corrected back to
+** the earliest event and changed there (resolve.c), until every cycle has vanished.
 ** Positive weights only; polygons with holes (every cycle is one more
 ** linked list, and the penetration search covers them all).
 **
-** The step-size policy (README): the first increment lets an edge of the
-** largest weight cross about one grid cell (the grid predict.c lays over
-** the polygon, sqrt(alive) cells a side) times --step (1 by default);
-** after a step without events the increment doubles; after a corrected
-** step it becomes twice the time the step advanced (the same if the event
-** was at the step's start).  Event times come from the
-** exact interpolation, not from the grid of steps, so the skeleton does
+** The step-size policy (README, predict.c): a window lasts while a vertex
+** of the mean speed crosses DF_WINDOW_CELLS grid cells, times --step (1 by
+** default); after a window without events it doubles, after one closed
+** because half its vertices changed it halves.  Event times come from the
+** exact interpolation, not from the windows, so the skeleton does
 ** not depend on the increment (tests/test_deforming.py halves and doubles
 ** it).
 **

@@ -23,9 +23,9 @@
 #include "variant.h"
 
 #define DF_COUNTER_LIST(X)                                                                        \
-    X(steps, "predictor steps (time increments tried)")                                           \
-    X(event_free_steps, "steps whose predicted polygon was admissible (no swap, no penetration)")  \
-    X(corrections, "steps corrected back to the time of their earliest event")                    \
+    X(steps, "predictor windows opened (every alive vertex predicted)")                           \
+    X(event_free_steps, "windows that held no event (no swap, no penetration)")                   \
+    X(corrections, "corrections to the time of an earliest event (groups resolved)")               \
     X(edge_swaps, "edge collapses found by an edge swap")                                         \
     X(penetrations, "edge splits found by a vertex penetrating a piece")                          \
     X(merges, "parts of the wavefront joined by a vertex reaching a piece from the swept side")    \
