@@ -1,18 +1,16 @@
 /*
 ** deforming.c: the deforming-polygon variant (paper 004): the wavefront
 ** as a polygon whose vertices move at constant velocity, advanced by
-** predictor steps (predict.c), corrected back to the earliest event of a
-** step and changed there (resolve.c), until every cycle has vanished.
+** a kinetic search over predictor windows (predict.c), corrected back to
+** the earliest event and changed there (resolve.c), until every cycle has vanished.
 ** Positive weights only; polygons with holes (every cycle is one more
 ** linked list, and the penetration search covers them all).
 **
-** The step-size policy (README): the first increment lets an edge of the
-** largest weight cross about one grid cell (the grid predict.c lays over
-** the polygon, sqrt(alive) cells a side) times --step (1 by default);
-** after a step without events the increment doubles; after a corrected
-** step it becomes twice the time the step advanced (the same if the event
-** was at the step's start).  Event times come from the
-** exact interpolation, not from the grid of steps, so the skeleton does
+** The step-size policy (README, predict.c): a window lasts while a vertex
+** of the mean speed crosses DF_WINDOW_CELLS grid cells, times --step (1 by
+** default); after a window without events it doubles, after one closed
+** because half its vertices changed it halves.  Event times come from the
+** exact interpolation, not from the windows, so the skeleton does
 ** not depend on the increment (tests/test_deforming.py halves and doubles
 ** it).
 **
@@ -30,11 +28,14 @@ wk_status df_add_vertex(df_state *D, const df_vertex *V, uint32_t *id) {
     wk_run *R = D->R;
     if (WK_GROW(R, D->v, D->cap_v, D->nv + 1) != WK_OK ||
         WK_GROW(R, D->member, D->cap_member, D->nv + 1) != WK_OK ||
-        WK_GROW(R, D->mark, D->cap_mark, D->nv + 1) != WK_OK)
+        WK_GROW(R, D->mark, D->cap_mark, D->nv + 1) != WK_OK ||
+        WK_GROW(R, D->k, D->cap_k, D->nv + 1) != WK_OK)
         return R->err.code;
     D->v[D->nv] = *V;
     D->member[D->nv] = WK_NONE;
     D->mark[D->nv] = 0;
+    D->k[D->nv] = (df_kin){0, 0, WK_NONE, 0};
+    df_touch(D, D->nv);
     *id = D->nv++;
     D->n_alive++;
     return WK_OK;
@@ -43,17 +44,13 @@ wk_status df_add_vertex(df_state *D, const df_vertex *V, uint32_t *id) {
 static void df_free(df_state *D) {
     wk_run *R = D->R;
     df_resolve_free(D);
+    df_predict_free(D);
     WK_FREE_ARRAY(R, D->L, D->P->n);
     WK_FREE_ARRAY(R, D->v, D->cap_v);
     WK_FREE_ARRAY(R, D->member, D->cap_member);
     WK_FREE_ARRAY(R, D->mark, D->cap_mark);
     WK_FREE_ARRAY(R, D->ev, D->cap_ev);
-    WK_FREE_ARRAY(R, D->ids, D->cap_ids);
-    WK_FREE_ARRAY(R, D->cell_start, D->cap_cell_start);
-    WK_FREE_ARRAY(R, D->cell_items, D->cap_cell_items);
-    WK_FREE_ARRAY(R, D->big, D->cap_big);
-    WK_FREE_ARRAY(R, D->stamp, D->cap_stamp);
-    WK_FREE_ARRAY(R, D->cell_mark, D->cap_cell_mark);
+    WK_FREE_ARRAY(R, D->k, D->cap_k);
 }
 
 /* The input vertices: vertex i between edges prev(i) and i. */
@@ -106,8 +103,9 @@ static wk_status df_start(df_state *D) {
     ** collinear rule at t = 0 */
     for (uint32_t i = 0; i < P->n; i++)
         if (D->v[i].alive && df_collinear_rule(D, i, 0.0, false) != WK_OK) return R->err.code;
-    double cells = ceil(sqrt((double)P->n));
-    D->dt = R->opt.step_scale * scale / (cells * D->wmax);
+    D->scale = scale;
+    D->dt_near = R->opt.step_scale * scale / (ceil(sqrt((double)P->n)) * D->wmax);
+    D->dt = R->opt.step_scale * DF_WINDOW_CELLS;
     return WK_OK;
 }
 
@@ -148,17 +146,22 @@ static wk_status df_simulate(df_state *D) {
     double H = R->opt.height;
     while (D->n_alive > 0 && !(H > 0 && D->t >= H)) {
         double te;
-        if (H > 0 && D->t + D->dt > H) D->dt = H - D->t;
         if (D->t_vanish > 0 && D->t > D->t_vanish)
             return WK_FAIL(R, WK_EALGO, D->P->name, 0,
                            "deforming: %u vertices still alive at t = %.17g, after the wavefront "
                            "must have vanished (t <= %.17g)",
                            D->n_alive, D->t, D->t_vanish);
-        if (df_predict(D, &te) != WK_OK) return R->err.code;
+        if (!D->window && df_window(D) != WK_OK) return R->err.code;
+        if (df_next_group(D, &te) != WK_OK) return R->err.code;
         if (D->n_ev == 0) {
-            wk_count(R, WK_VC_event_free_steps, 1);
-            D->t = H > 0 && D->t + D->dt >= H ? H : D->t + D->dt;
-            D->dt *= 2;
+            /* the window holds no more events: the present moves to its
+            ** end; a window of few events doubles (004's increment after
+            ** an admissible step) */
+            if (D->win_groups == 0) wk_count(R, WK_VC_event_free_steps, 1);
+            if (D->win_groups == 0) D->dt *= 2;
+            D->dt_near *= 2;
+            D->t = D->T1;
+            D->window = false;
             if (!isfinite(D->t))
                 return WK_FAIL(R, WK_EALGO, D->P->name, 0,
                                "deforming: %u vertices still alive at t = infinity", D->n_alive);
@@ -171,11 +174,15 @@ static wk_status df_simulate(df_state *D) {
         if (same_time > 8 * (uint64_t)D->P->n + 64)
             return WK_FAIL(R, WK_EALGO, D->P->name, 0,
                            "deforming: events at t = %.17g do not end (resolution loop)", te);
-        /* the next increment: twice the time this step advanced (events
-        ** come at about that rate), the same when it did not advance */
-        if (te > D->t) D->dt = 2 * (te - D->t);
+        if (te > D->t) D->dt_near = 2 * (te - D->t);
         D->t = te;
-        if (df_resolve(D, te) != WK_OK) return R->err.code;
+        if (df_resolve(D, te) != WK_OK || df_update(D) != WK_OK) return R->err.code;
+        /* A window in which half its vertices changed has a grid of the
+        ** past: it closes, and the next is half as long. */
+        if (2 * ++D->win_groups > D->win_alive + 1) {
+            D->window = false;
+            D->dt /= 2;
+        }
     }
     if (D->n_alive > 0 && df_cap(D, H) != WK_OK) return R->err.code;
     return wk_skeleton_merge_pass_through(R, D->S);
@@ -186,6 +193,8 @@ static wk_status deforming_run(wk_run *R, const wk_polygon *P, wk_skeleton **out
     memset(&D, 0, sizeof D);
     D.R = R;
     D.P = P;
+    D.touch_head = DF_TOUCH_END;
+    wk_event_queue_init(&D.Q);
     wk_status st = df_start(&D);
     if (st == WK_OK) st = df_simulate(&D);
     if (st == WK_OK) {

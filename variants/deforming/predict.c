@@ -44,24 +44,20 @@ static void box_add(box *b, wk_point p) {
 
 static box box_of(wk_point p) { return (box){p.x, p.y, p.x, p.y}; }
 
-typedef struct grid {
-    double x0, y0, cw, ch;
-    uint32_t gx, gy;
-} grid;
-
 static uint32_t clampi(double f, uint32_t g) {
     if (!(f > 0)) return 0;
     if (f >= (double)g) return g - 1;
     return (uint32_t)f;
 }
 
-/* Cell range of b; false if it covers more than DF_GRID_BIG cells. */
-static bool cells(const grid *G, box b, double pad, uint32_t *i0, uint32_t *j0, uint32_t *i1,
+/* Cell range of b in the window's grid (an item outside it clamps to its
+** border cells); false if it covers more than DF_GRID_BIG cells. */
+static bool cells(const df_state *D, box b, double pad, uint32_t *i0, uint32_t *j0, uint32_t *i1,
                   uint32_t *j1) {
-    *i0 = clampi((b.x0 - pad - G->x0) / G->cw, G->gx);
-    *i1 = clampi((b.x1 + pad - G->x0) / G->cw, G->gx);
-    *j0 = clampi((b.y0 - pad - G->y0) / G->ch, G->gy);
-    *j1 = clampi((b.y1 + pad - G->y0) / G->ch, G->gy);
+    *i0 = clampi((b.x0 - pad - D->gx0) / D->gcw, D->g);
+    *i1 = clampi((b.x1 + pad - D->gx0) / D->gcw, D->g);
+    *j0 = clampi((b.y0 - pad - D->gy0) / D->gch, D->g);
+    *j1 = clampi((b.y1 + pad - D->gy0) / D->gch, D->g);
     return (uint64_t)(*i1 - *i0 + 1) * (*j1 - *j0 + 1) <= DF_GRID_BIG;
 }
 
@@ -70,6 +66,10 @@ static bool cells(const grid *G, box b, double pad, uint32_t *i0, uint32_t *j0, 
 ** dropped at once, so a long step does not collect every later event. */
 static wk_status push_event(df_state *D, double t, uint32_t kind, uint32_t a, uint32_t b,
                             const wk_point *x) {
+    if (!D->collect) { /* a prediction: only the earliest time */
+        if (t < D->best) D->best = t;
+        return WK_OK;
+    }
     if (t > D->best + D->eps_t) return WK_OK;
     if (t < D->best) D->best = t;
     if (WK_GROW(D->R, D->ev, D->cap_ev, D->n_ev + 1) != WK_OK) return D->R->err.code;
@@ -92,6 +92,19 @@ static double root(double dx, double dy, const df_vertex *a, const df_vertex *b,
     return -k / rate;
 }
 
+/* The time t3 where three offset lines meet stands for the root tr of an
+** interpolated quantity when the two are within a step of the step-size
+** policy (D->dt_near: twice the time between the last two groups, as the
+** predictor's increment of 004 would be) of each other: within a short
+** step, as the predictor of one step at a time took it.  Farther apart,
+** the lines' meeting is not this event (a vertex whose motion the lines do
+** not give; a coastline with outward edges, n = 256, cut at 50, met at
+** 31.8 by its lines and 27.2 by the root) and the root is taken, as the
+** short steps did before the search spanned windows. */
+static bool near_root(const df_state *D, double t3, double tr) {
+    return fabs(t3 - tr) <= D->dt_near;
+}
+
 /* Edge swap of the piece a -> next(a) within [t, t1]. */
 static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     const df_vertex *A = &D->v[a], *B = &D->v[A->next];
@@ -112,11 +125,12 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     /* Between nearly parallel edges the vertices are fast and l's root is
     ** ill-conditioned; the time where the three offset lines meet comes
     ** from the input lines alone (as CGAL's trisegments and the engine's
-    ** edge events), so it is taken when it falls in the step. */
+    ** edge events), so it is taken when it falls in the step (see
+    ** near_root). */
     wk_point m;
     double t3;
     if (l0 > 0 && wk_three_lines_meet(&D->L[A->ein], L, &D->L[B->eout], &m, &t3) && t3 >= t &&
-        t3 <= t1)
+        t3 <= t1 && near_root(D, t3, te))
         return push_event(D, t3, DF_COLLAPSE, a, WK_NONE, &m);
     if (te < t) te = t;
     if (te > t1) te = t1;
@@ -237,11 +251,11 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     ** (tests/data/fuzz/mismatch_deforming_regular5_far_node.wpoly). */
     wk_point m;
     double t3;
+    double tr = g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate);
     if (g0 > 0 && wk_three_lines_meet(&D->L[V->ein], &D->L[V->eout], L, &m, &t3) && t3 >= t &&
-        t3 <= t1)
+        t3 <= t1 && near_root(D, t3, tr))
         return contact(D, p, a, t, t1, t3, &m, eps_c, DF_PENETRATION);
-    return contact(D, p, a, t, t1, g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate), NULL,
-                   eps_c, DF_PENETRATION);
+    return contact(D, p, a, t, t1, tr, NULL, eps_c, DF_PENETRATION);
 }
 
 /* The event's configuration at te: a collapsing piece no longer than eps_c,
@@ -266,152 +280,338 @@ static int event_cmp(const df_event *x, const df_event *y) {
 
 static int event_cmp_void(const void *x, const void *y) { return event_cmp(x, y); }
 
-wk_status df_predict(df_state *D, double *t_event) {
-    wk_run *R = D->R;
-    /* The search reaches eps_t past the step's end: the events of one group
-    ** may straddle it (a collapse whose interpolated time is the end, 1e-15
-    ** before 2, and a head-on contact at 2 from the input lines: resolved
-    ** apart, the collinear rule of the first swept a piece the second
-    ** should have ended, and the skeleton failed the validator; the
-    ** integer-weighted rectilinear polygon of the family sweep, n = 1000,
-    ** went to the reference). */
-    double t = D->t, t1 = D->t + D->dt + D->eps_t;
-    if (D->R->opt.height > 0 && t1 > D->R->opt.height) t1 = D->R->opt.height; /* the cap's time */
+/* ------------------------------------------------------------------
+** The kinetic search.  A window [t, T1] (T1 = t + dt, the step-size
+** policy's increment) has a uniform grid over the bounding box of the
+** alive vertices at t and t1 = T1 + eps_t, and two kinds of cell lists:
+** each piece in the cells its swept area meets over the rest of the window,
+** each vertex path in the cells it crosses.  Every alive vertex p is queued
+** with a lower bound of the time of its earliest own event (the edge swap
+** of its piece p -> next(p), its penetrations and merges), from a
+** prediction: the tests of the step above at the present, against the
+** pieces in the cells of its path.  The bound holds because what p's
+** events depend on only changes in a resolution, and df_update re-predicts
+** then: a vertex whose links changed (resolve.c touches it) fully, and a
+** vertex whose path meets a new or changed piece against that piece (its
+** key lowered to the pair's event if earlier).  A piece that changed or
+** ended leaves keys that are too early, never too late: the group's
+** search (df_next_group) takes vertices off the queue earliest first,
+** predicts each again at the present, collecting its events, until the
+** next key is later than the earliest event found plus eps_t: every event
+** of the group is then found, as the step over every vertex found it.
+** So a step costs what changes (the vertices of the group and their
+** neighbours, the paths near the new pieces), not every alive vertex.
+** Invariants between groups: every alive vertex with an event in the
+** window is queued with a key no later than that event; every alive
+** piece and path is in the cells of its swept box from its version's
+** birth (or the window's start) to t1; entries of ended or changed pieces
+** stay in the lists and are skipped (their version is old).
+*/
+
+static uint32_t next_gen(df_state *D) {
+    if (D->gen >= UINT32_MAX - 2) { /* wrap: no stamp may equal a new one */
+        for (uint32_t i = 0; i < D->nv; i++) D->k[i].stamp = 0;
+        for (uint32_t c = 0; c < D->cap_cell_mark; c++) D->cell_mark[c] = 0;
+        D->gen = 0;
+    }
+    return ++D->gen;
+}
+
+static wk_point lerp(wk_point a, wk_point b, double f) {
+    return (wk_point){a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
+}
+
+static uint32_t parts_of(const df_state *D, double len) {
+    double parts = ceil(len / D->gcell);
+    return !(parts >= 1) ? 1 : parts > 4.0 * D->g ? 4 * D->g : (uint32_t)parts;
+}
+
+/* The cells (into D->cl, each once: marked with gen) met by a segment moving
+** linearly from a0 b0 at ta to a1 b1 at tb: cut into parts about one cell
+** along the segment and one cell along the motion, each part within the box
+** of its four corners (a point of the segment moves linearly, so the part
+** lies in their convex hull).  A path is a segment of length 0.  False if
+** some part's box covers more than DF_GRID_BIG cells (test against all). */
+static wk_status collect_cells(df_state *D, wk_point a0, wk_point b0, wk_point a1, wk_point b1,
+                               uint32_t gen, bool *big) {
     double eps_c = WK_DEFORM_CONTACT_SLACK * D->eps_d;
-    D->n_ev = 0;
-    D->best = INFINITY;
-    *t_event = INFINITY;
-    wk_count(R, WK_VC_steps, 1);
-    /* alive vertices in id order (deterministic) */
-    uint32_t m = 0;
-    if (WK_GROW(R, D->ids, D->cap_ids, D->n_alive + 1) != WK_OK) return R->err.code;
-    for (uint32_t i = 0; i < D->nv; i++)
-        if (D->v[i].alive) D->ids[m++] = i;
-    if (m == 0) return WK_OK;
-    /* edge swaps */
-    for (uint32_t k = 0; k < m; k++)
-        if (test_swap(D, D->ids[k], t, t1) != WK_OK) return R->err.code;
-    /* the grid over the step's bounding box */
-    box all = box_of(df_pos(&D->v[D->ids[0]], t));
-    for (uint32_t k = 0; k < m; k++) {
-        box_add(&all, df_pos(&D->v[D->ids[k]], t));
-        box_add(&all, df_pos(&D->v[D->ids[k]], t1));
-    }
-    grid G;
-    uint32_t g = (uint32_t)ceil(sqrt((double)m));
-    G.gx = G.gy = g;
-    G.x0 = all.x0;
-    G.y0 = all.y0;
-    G.cw = (all.x1 - all.x0) / g;
-    G.ch = (all.y1 - all.y0) / g;
-    if (!(G.cw > 0)) G.cw = 1;
-    if (!(G.ch > 0)) G.ch = 1;
-    uint32_t nc = g * g;
-    if (WK_GROW(R, D->cell_start, D->cap_cell_start, nc + 1) != WK_OK ||
-        WK_GROW(R, D->stamp, D->cap_stamp, D->nv) != WK_OK)
-        return R->err.code;
-    for (uint32_t c = 0; c <= nc; c++) D->cell_start[c] = 0;
-    for (uint32_t i = 0; i < D->nv; i++) D->stamp[i] = WK_NONE;
-    uint32_t n_big = 0;
-    /* Pass 0 counts the cells of each piece, pass 1 fills them.  A long
-    ** piece is cut into parts about one cell long, each entered in the
-    ** cells of its swept box (a long diagonal piece would otherwise fill a
-    ** square of cells); a cell takes a piece once (cell_mark). */
-    if (WK_GROW(R, D->cell_mark, D->cap_cell_mark, nc) != WK_OK) return R->err.code;
-    double cell = G.cw < G.ch ? G.cw : G.ch;
-    for (int pass = 0; pass < 2; pass++) {
-        for (uint32_t c = 0; c < nc; c++) D->cell_mark[c] = WK_NONE;
-        for (uint32_t k = 0; k < m; k++) {
-            uint32_t a = D->ids[k];
-            const df_vertex *A = &D->v[a], *B = &D->v[A->next];
-            wk_point a0 = df_pos(A, t), a1 = df_pos(A, t1), b0 = df_pos(B, t), b1 = df_pos(B, t1);
-            double len = fmax(hypot(b0.x - a0.x, b0.y - a0.y), hypot(b1.x - a1.x, b1.y - a1.y));
-            double parts = ceil(len / cell);
-            uint32_t np = !(parts >= 1) ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
-            bool big = false;
-            for (uint32_t s = 0; s < np && !big; s++) {
-                double f0 = (double)s / np, f1 = (double)(s + 1) / np;
-                box b = box_of((wk_point){a0.x + f0 * (b0.x - a0.x), a0.y + f0 * (b0.y - a0.y)});
-                box_add(&b, (wk_point){a0.x + f1 * (b0.x - a0.x), a0.y + f1 * (b0.y - a0.y)});
-                box_add(&b, (wk_point){a1.x + f0 * (b1.x - a1.x), a1.y + f0 * (b1.y - a1.y)});
-                box_add(&b, (wk_point){a1.x + f1 * (b1.x - a1.x), a1.y + f1 * (b1.y - a1.y)});
-                uint32_t i0, j0, i1, j1;
-                if (!cells(&G, b, eps_c, &i0, &j0, &i1, &j1)) {
-                    big = true;
-                    break;
-                }
-                for (uint32_t j = j0; j <= j1; j++)
-                    for (uint32_t i = i0; i <= i1; i++) {
-                        uint32_t c = j * g + i;
-                        if (D->cell_mark[c] == a) continue;
-                        D->cell_mark[c] = a;
-                        if (pass == 0)
-                            D->cell_start[c + 1]++;
-                        else
-                            D->cell_items[D->cell_start[c]++] = a;
-                    }
-            }
-            if (big && pass == 0) {
-                if (WK_GROW(R, D->big, D->cap_big, n_big + 1) != WK_OK) return R->err.code;
-                D->big[n_big++] = a;
-            }
-        }
-        if (pass == 0) {
-            for (uint32_t c = 0; c < nc; c++) D->cell_start[c + 1] += D->cell_start[c];
-            if (WK_GROW(R, D->cell_items, D->cap_cell_items, D->cell_start[nc] + 1) != WK_OK)
-                return R->err.code;
-        } else {
-            /* filling advanced each start to the next cell's: shift back */
-            for (uint32_t c = nc; c > 0; c--) D->cell_start[c] = D->cell_start[c - 1];
-            D->cell_start[0] = 0;
-        }
-    }
-    uint64_t tests = 0;
-    for (uint32_t k = 0; k < m; k++) {
-        uint32_t p = D->ids[k];
-        const df_vertex *V = &D->v[p];
-        /* the path, cut into parts about one cell long (a fast vertex's
-        ** path crosses many cells, its box far more) */
-        wk_point p0 = df_pos(V, t), p1 = df_pos(V, t1);
-        double parts = ceil(hypot(p1.x - p0.x, p1.y - p0.y) / cell);
-        uint32_t np = !(parts >= 1) ? 1 : parts > 4.0 * g ? 4 * g : (uint32_t)parts;
-        bool all = false;
-        for (uint32_t s = 0; s < np && !all; s++) {
-            double f0 = (double)s / np, f1 = (double)(s + 1) / np;
-            box b = box_of((wk_point){p0.x + f0 * (p1.x - p0.x), p0.y + f0 * (p1.y - p0.y)});
-            box_add(&b, (wk_point){p0.x + f1 * (p1.x - p0.x), p0.y + f1 * (p1.y - p0.y)});
+    double ls = fmax(hypot(b0.x - a0.x, b0.y - a0.y), hypot(b1.x - a1.x, b1.y - a1.y));
+    double lt = fmax(hypot(a1.x - a0.x, a1.y - a0.y), hypot(b1.x - b0.x, b1.y - b0.y));
+    uint32_t ns = parts_of(D, ls), nt = parts_of(D, lt);
+    D->n_cl = 0;
+    *big = (uint64_t)ns * nt > 16u * D->g + 64;
+    for (uint32_t u = 0; u < nt && !*big; u++) {
+        double g0 = (double)u / nt, g1 = (double)(u + 1) / nt;
+        wk_point c0 = lerp(a0, a1, g0), c1 = lerp(a0, a1, g1), d0 = lerp(b0, b1, g0),
+                 d1 = lerp(b0, b1, g1);
+        for (uint32_t s = 0; s < ns; s++) {
+            double f0 = (double)s / ns, f1 = (double)(s + 1) / ns;
+            box b = box_of(lerp(c0, d0, f0));
+            box_add(&b, lerp(c0, d0, f1));
+            box_add(&b, lerp(c1, d1, f0));
+            box_add(&b, lerp(c1, d1, f1));
             uint32_t i0, j0, i1, j1;
-            if (!cells(&G, b, eps_c, &i0, &j0, &i1, &j1)) {
-                all = true;
+            if (!cells(D, b, eps_c, &i0, &j0, &i1, &j1)) {
+                *big = true;
                 break;
             }
             for (uint32_t j = j0; j <= j1; j++)
                 for (uint32_t i = i0; i <= i1; i++) {
-                    uint32_t c = j * g + i;
-                    for (uint32_t q = D->cell_start[c]; q < D->cell_start[c + 1]; q++) {
-                        uint32_t a = D->cell_items[q];
-                        if (D->stamp[a] == p) continue;
-                        D->stamp[a] = p;
-                        tests++;
-                        if (test_penetration(D, p, a, t, t1, eps_c) != WK_OK) return R->err.code;
-                    }
+                    uint32_t c = j * D->g + i;
+                    if (D->cell_mark[c] == gen) continue;
+                    D->cell_mark[c] = gen;
+                    if (WK_GROW(D->R, D->cl, D->cap_cl, D->n_cl + 1) != WK_OK)
+                        return D->R->err.code;
+                    D->cl[D->n_cl++] = c;
                 }
         }
-        if (all) {
-            for (uint32_t q = 0; q < m; q++) {
-                if (D->stamp[D->ids[q]] == p) continue;
-                tests++;
-                if (test_penetration(D, p, D->ids[q], t, t1, eps_c) != WK_OK) return R->err.code;
-            }
-            continue;
-        }
-        for (uint32_t q = 0; q < n_big; q++) {
-            tests++;
-            if (test_penetration(D, p, D->big[q], t, t1, eps_c) != WK_OK) return R->err.code;
-        }
     }
-    wk_count(R, WK_VC_pair_tests, tests);
-    D->last_tests = tests;
+    return WK_OK;
+}
+
+static wk_status put(df_state *D, uint32_t *head, uint32_t c, uint32_t item, uint32_t ver) {
+    if (WK_GROW(D->R, D->ent, D->cap_ent, D->n_ent + 1) != WK_OK) return D->R->err.code;
+    D->ent[D->n_ent] = (df_entry){item, ver, head[c]};
+    head[c] = D->n_ent++;
+    return WK_OK;
+}
+
+static bool piece_valid(const df_state *D, uint32_t a, uint32_t ver) {
+    return D->v[a].alive && D->k[a].pver == ver;
+}
+
+/* Enter the piece a -> next(a) (its present version) from t to t1. */
+static wk_status insert_piece(df_state *D, uint32_t a) {
+    const df_vertex *A = &D->v[a], *B = &D->v[A->next];
+    uint32_t gen = next_gen(D);
+    bool big;
+    if (collect_cells(D, df_pos(A, D->t), df_pos(B, D->t), df_pos(A, D->t1), df_pos(B, D->t1),
+                      gen, &big) != WK_OK)
+        return D->R->err.code;
+    if (big) {
+        if (WK_GROW(D->R, D->big_piece, D->cap_big_piece, D->n_big_piece + 1) != WK_OK)
+            return D->R->err.code;
+        D->big_piece[D->n_big_piece++] = (df_entry){a, D->k[a].pver, 0};
+        return WK_OK;
+    }
+    for (uint32_t q = 0; q < D->n_cl; q++)
+        if (put(D, D->head_piece, D->cl[q], a, D->k[a].pver) != WK_OK) return D->R->err.code;
+    return WK_OK;
+}
+
+/* Enter the path of vertex p from t to t1. */
+static wk_status insert_path(df_state *D, uint32_t p) {
+    const df_vertex *V = &D->v[p];
+    wk_point p0 = df_pos(V, D->t), p1 = df_pos(V, D->t1);
+    uint32_t gen = next_gen(D);
+    bool big;
+    D->k[p].inpath = D->wgen;
+    if (collect_cells(D, p0, p0, p1, p1, gen, &big) != WK_OK) return D->R->err.code;
+    if (big) {
+        if (WK_GROW(D->R, D->big_path, D->cap_big_path, D->n_big_path + 1) != WK_OK)
+            return D->R->err.code;
+        D->big_path[D->n_big_path++] = p;
+        return WK_OK;
+    }
+    for (uint32_t q = 0; q < D->n_cl; q++)
+        if (put(D, D->head_path, D->cl[q], p, 0) != WK_OK) return D->R->err.code;
+    return WK_OK;
+}
+
+/* Every event of vertex p from the present to t1 (its piece's edge swap,
+** its penetrations and merges through the pieces near its path): pushed
+** (D->collect) or only the earliest time kept in D->best. */
+static wk_status predict_vertex(df_state *D, uint32_t p) {
+    double t = D->t, t1 = D->t1, eps_c = WK_DEFORM_CONTACT_SLACK * D->eps_d;
+    if (test_swap(D, p, t, t1) != WK_OK) return D->R->err.code;
+    const df_vertex *V = &D->v[p];
+    wk_point p0 = df_pos(V, t), p1 = df_pos(V, t1);
+    uint32_t gen = next_gen(D);
+    bool big;
+    if (collect_cells(D, p0, p0, p1, p1, gen, &big) != WK_OK) return D->R->err.code;
+    uint64_t tests = 0;
+    if (big) {
+        for (uint32_t a = 0; a < D->nv; a++) {
+            if (!D->v[a].alive) continue;
+            tests++;
+            if (test_penetration(D, p, a, t, t1, eps_c) != WK_OK) return D->R->err.code;
+        }
+        D->tests += tests;
+        return WK_OK;
+    }
+    for (uint32_t q = 0; q < D->n_cl; q++)
+        for (uint32_t e = D->head_piece[D->cl[q]]; e != WK_NONE; e = D->ent[e].next) {
+            uint32_t a = D->ent[e].item;
+            if (!piece_valid(D, a, D->ent[e].ver) || D->k[a].stamp == gen) continue;
+            D->k[a].stamp = gen;
+            tests++;
+            if (test_penetration(D, p, a, t, t1, eps_c) != WK_OK) return D->R->err.code;
+        }
+    for (uint32_t q = 0; q < D->n_big_piece; q++) {
+        uint32_t a = D->big_piece[q].item;
+        if (!piece_valid(D, a, D->big_piece[q].ver) || D->k[a].stamp == gen) continue;
+        D->k[a].stamp = gen;
+        tests++;
+        if (test_penetration(D, p, a, t, t1, eps_c) != WK_OK) return D->R->err.code;
+    }
+    D->tests += tests;
+    return WK_OK;
+}
+
+/* Predict p afresh and queue it with its earliest event (none: off the
+** queue until the next window). */
+static wk_status requeue(df_state *D, uint32_t p) {
+    D->best = INFINITY;
+    if (predict_vertex(D, p) != WK_OK) return D->R->err.code;
+    if (D->best == INFINITY) {
+        wk_event_queue_remove(D->R, &D->Q, p);
+        return WK_OK;
+    }
+    return wk_event_queue_set(D->R, &D->Q, p, (wk_event_key){D->best, 0});
+}
+
+/* Lower p's key to its event with the piece a -> next(a), if any. */
+static wk_status pair_update(df_state *D, uint32_t p, uint32_t a) {
+    double eps_c = WK_DEFORM_CONTACT_SLACK * D->eps_d;
+    D->best = INFINITY;
+    D->tests++;
+    if (test_penetration(D, p, a, D->t, D->t1, eps_c) != WK_OK) return D->R->err.code;
+    if (D->best == INFINITY ||
+        (wk_event_queue_contains(&D->Q, p) && D->Q.key[p].time <= D->best))
+        return WK_OK;
+    return wk_event_queue_set(D->R, &D->Q, p, (wk_event_key){D->best, 0});
+}
+
+/* The vertices whose paths meet the (new) piece a -> next(a): each tested
+** against it. */
+static wk_status piece_against_paths(df_state *D, uint32_t a) {
+    const df_vertex *A = &D->v[a], *B = &D->v[A->next];
+    uint32_t gen = next_gen(D);
+    bool big;
+    if (collect_cells(D, df_pos(A, D->t), df_pos(B, D->t), df_pos(A, D->t1), df_pos(B, D->t1),
+                      gen, &big) != WK_OK)
+        return D->R->err.code;
+    if (big) {
+        for (uint32_t p = 0; p < D->nv; p++)
+            if (D->v[p].alive && pair_update(D, p, a) != WK_OK) return D->R->err.code;
+        return WK_OK;
+    }
+    for (uint32_t q = 0; q < D->n_cl; q++)
+        for (uint32_t e = D->head_path[D->cl[q]]; e != WK_NONE; e = D->ent[e].next) {
+            uint32_t p = D->ent[e].item;
+            if (!D->v[p].alive || D->k[p].stamp == gen) continue;
+            D->k[p].stamp = gen;
+            if (pair_update(D, p, a) != WK_OK) return D->R->err.code;
+        }
+    for (uint32_t q = 0; q < D->n_big_path; q++) {
+        uint32_t p = D->big_path[q];
+        if (!D->v[p].alive || D->k[p].stamp == gen) continue;
+        D->k[p].stamp = gen;
+        if (pair_update(D, p, a) != WK_OK) return D->R->err.code;
+    }
+    return WK_OK;
+}
+
+/* Empty the touched list into D->tl (each vertex once). */
+static wk_status take_touched(df_state *D) {
+    D->n_tl = 0;
+    for (uint32_t x = D->touch_head; x != DF_TOUCH_END;) {
+        uint32_t nx = D->k[x].tnext;
+        D->k[x].tnext = WK_NONE;
+        if (WK_GROW(D->R, D->tl, D->cap_tl, D->n_tl + 1) != WK_OK) return D->R->err.code;
+        D->tl[D->n_tl++] = x;
+        x = nx;
+    }
+    D->touch_head = DF_TOUCH_END;
+    return WK_OK;
+}
+
+wk_status df_window(df_state *D) {
+    wk_run *R = D->R;
+    double H = R->opt.height;
+    /* The window's length: the time in which a vertex of the mean speed
+    ** crosses D->dt cells of a grid of sqrt(alive) cells a side over the
+    ** alive vertices now: longer, and the paths and swept areas cover many
+    ** cells (every query tests more pairs); shorter, and the windows are
+    ** many (each predicts every vertex). */
+    box now = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+    double speed = 0;
+    for (uint32_t i = 0; i < D->nv; i++)
+        if (D->v[i].alive) {
+            box_add(&now, df_pos(&D->v[i], D->t));
+            speed += hypot(D->v[i].v.x, D->v[i].v.y);
+        }
+    uint32_t g = (uint32_t)ceil(sqrt((double)D->n_alive));
+    if (g < 1) g = 1;
+    double side = fmax(now.x1 - now.x0, now.y1 - now.y0);
+    double W = D->dt * side / g / (speed / (D->n_alive ? D->n_alive : 1));
+    if (!(W > 0) || !isfinite(W)) W = D->dt * D->scale / (g * D->wmax);
+    D->T1 = D->t + W;
+    if (H > 0 && D->T1 > H) D->T1 = H;
+    D->t1 = D->T1 + D->eps_t;
+    if (H > 0 && D->t1 > H) D->t1 = H; /* the cap's time */
+    D->window = true;
+    D->wgen++;
+    D->win_groups = 0;
+    D->win_alive = D->n_alive;
+    wk_count(R, WK_VC_steps, 1);
+    if (take_touched(D) != WK_OK) return R->err.code;
+    while (wk_event_queue_peek(&D->Q) != WK_NONE) (void)wk_event_queue_pop(R, &D->Q);
+    /* the grid over the alive vertices at t and t1 */
+    box all = now;
+    for (uint32_t i = 0; i < D->nv; i++)
+        if (D->v[i].alive) box_add(&all, df_pos(&D->v[i], D->t1));
+    if (!(all.x1 >= all.x0)) all = (box){0, 0, 0, 0};
+    D->g = g;
+    D->gx0 = all.x0;
+    D->gy0 = all.y0;
+    D->gcw = (all.x1 - all.x0) / g;
+    D->gch = (all.y1 - all.y0) / g;
+    if (!(D->gcw > 0)) D->gcw = 1;
+    if (!(D->gch > 0)) D->gch = 1;
+    D->gcell = D->gcw < D->gch ? D->gcw : D->gch;
+    uint32_t nc = g * g;
+    if (WK_GROW(R, D->head_piece, D->cap_head_piece, nc) != WK_OK ||
+        WK_GROW(R, D->head_path, D->cap_head_path, nc) != WK_OK)
+        return R->err.code;
+    if (nc > D->cap_cell_mark) {
+        uint32_t old = D->cap_cell_mark;
+        if (WK_GROW(R, D->cell_mark, D->cap_cell_mark, nc) != WK_OK) return R->err.code;
+        for (uint32_t c = old; c < D->cap_cell_mark; c++) D->cell_mark[c] = 0;
+    }
+    for (uint32_t c = 0; c < nc; c++) D->head_piece[c] = D->head_path[c] = WK_NONE;
+    D->n_ent = D->n_big_piece = D->n_big_path = 0;
+    for (uint32_t i = 0; i < D->nv; i++)
+        if (D->v[i].alive && (insert_piece(D, i) != WK_OK || insert_path(D, i) != WK_OK))
+            return R->err.code;
+    for (uint32_t i = 0; i < D->nv; i++)
+        if (D->v[i].alive && requeue(D, i) != WK_OK) return R->err.code;
+    wk_count(R, WK_VC_pair_tests, D->tests);
+    D->tests = 0;
+    return WK_OK;
+}
+
+wk_status df_next_group(df_state *D, double *t_event) {
+    wk_run *R = D->R;
+    double eps_c = WK_DEFORM_CONTACT_SLACK * D->eps_d;
+    D->n_ev = 0;
+    D->n_popped = 0;
+    D->best = INFINITY;
+    *t_event = INFINITY;
+    D->collect = true;
+    for (uint32_t p; (p = wk_event_queue_peek(&D->Q)) != WK_NONE;) {
+        if (D->Q.key[p].time > D->best + D->eps_t) break;
+        (void)wk_event_queue_pop(R, &D->Q);
+        if (WK_GROW(R, D->popped, D->cap_popped, D->n_popped + 1) != WK_OK ||
+            predict_vertex(D, p) != WK_OK) {
+            D->collect = false;
+            return R->err.code;
+        }
+        D->popped[D->n_popped++] = p;
+    }
+    D->collect = false;
+    wk_count(R, WK_VC_pair_tests, D->tests);
+    D->tests = 0;
     if (D->n_ev == 0) return WK_OK;
     /* keep the earliest events and those within eps_t of them: one group;
     ** but only those whose configuration has met at te within the contact
@@ -419,10 +619,17 @@ wk_status df_predict(df_state *D, double *t_event) {
     ** fast vertex's speed can be far more: a piece that a very fast vertex
     ** (a long spike's tip) would collapse eps_t later is still long at te,
     ** and grouping it ended its far vertex at the event point (a fuzz
-    ** finding).  Such an event is found again by the next step. */
+    ** finding).  Such an event is found again (its vertex was taken off
+    ** the queue and is predicted again after the resolution). */
     double te = INFINITY;
     for (uint32_t k = 0; k < D->n_ev; k++)
         if (D->ev[k].t < te) te = D->ev[k].t;
+    /* A group after the window's end may reach past the search's end: the
+    ** next window finds it whole. */
+    if (te > D->T1) {
+        D->n_ev = 0;
+        return WK_OK;
+    }
     uint32_t kept = 0;
     for (uint32_t k = 0; k < D->n_ev; k++)
         if (D->ev[k].t == te || (D->ev[k].t <= te + D->eps_t && met_at(D, &D->ev[k], te, eps_c)))
@@ -431,4 +638,48 @@ wk_status df_predict(df_state *D, double *t_event) {
     if (D->n_ev > 1) qsort(D->ev, D->n_ev, sizeof *D->ev, event_cmp_void);
     *t_event = te;
     return WK_OK;
+}
+
+wk_status df_update(df_state *D) {
+    wk_run *R = D->R;
+    if (take_touched(D) != WK_OK) return R->err.code;
+    /* ended vertices leave the queue; a changed piece is entered again
+    ** under a new version (its old entries are skipped), a new vertex's
+    ** path is entered */
+    for (uint32_t i = 0; i < D->n_tl; i++) {
+        uint32_t x = D->tl[i];
+        if (!D->v[x].alive) {
+            wk_event_queue_remove(R, &D->Q, x);
+            continue;
+        }
+        D->k[x].pver++;
+        if (insert_piece(D, x) != WK_OK) return R->err.code;
+        if (D->k[x].inpath != D->wgen && insert_path(D, x) != WK_OK) return R->err.code;
+    }
+    /* the touched vertices and those the group's search took off the queue:
+    ** predicted afresh (a vertex on both lists twice: harmless) */
+    for (uint32_t i = 0; i < D->n_tl; i++)
+        if (D->v[D->tl[i]].alive && requeue(D, D->tl[i]) != WK_OK) return R->err.code;
+    for (uint32_t i = 0; i < D->n_popped; i++)
+        if (D->v[D->popped[i]].alive && requeue(D, D->popped[i]) != WK_OK) return R->err.code;
+    /* every path near a changed piece: tested against it */
+    for (uint32_t i = 0; i < D->n_tl; i++)
+        if (D->v[D->tl[i]].alive && piece_against_paths(D, D->tl[i]) != WK_OK) return R->err.code;
+    wk_count(R, WK_VC_pair_tests, D->tests);
+    D->tests = 0;
+    return WK_OK;
+}
+
+void df_predict_free(df_state *D) {
+    wk_run *R = D->R;
+    wk_event_queue_clear(R, &D->Q);
+    WK_FREE_ARRAY(R, D->head_piece, D->cap_head_piece);
+    WK_FREE_ARRAY(R, D->head_path, D->cap_head_path);
+    WK_FREE_ARRAY(R, D->cell_mark, D->cap_cell_mark);
+    WK_FREE_ARRAY(R, D->cl, D->cap_cl);
+    WK_FREE_ARRAY(R, D->ent, D->cap_ent);
+    WK_FREE_ARRAY(R, D->big_piece, D->cap_big_piece);
+    WK_FREE_ARRAY(R, D->big_path, D->cap_big_path);
+    WK_FREE_ARRAY(R, D->popped, D->cap_popped);
+    WK_FREE_ARRAY(R, D->tl, D->cap_tl);
 }

@@ -260,6 +260,9 @@ static wk_status cut_piece(df_state *D, uint32_t a, double te) {
 
 static void unlink_vertex(df_state *D, uint32_t x) {
     df_vertex *X = &D->v[x];
+    df_touch(D, x);
+    df_touch(D, X->prev);
+    df_touch(D, X->next);
     D->v[X->prev].next = X->next;
     D->v[X->next].prev = X->prev;
     X->alive = 0;
@@ -350,6 +353,10 @@ wk_status df_collinear_rule(df_state *D, uint32_t x, double te, bool fresh) {
         uint32_t before = D->v[out_loses ? x : w].prev, after = D->v[out_loses ? y : x].next;
         D->v[x].alive = D->v[f].alive = 0;
         D->n_alive -= 2;
+        df_touch(D, x);
+        df_touch(D, f);
+        df_touch(D, before);
+        df_touch(D, after);
         D->v[z].prev = before;
         D->v[z].next = after;
         D->v[before].next = z;
@@ -528,6 +535,7 @@ static wk_status resolve(df_state *D, double te) {
     for (uint32_t i = 0; i < S->n_r; i++) {
         const df_ray *Y = &S->rays[i];
         uint32_t far = Y->far_vertex != WK_NONE ? Y->far_vertex : S->rays[Y->far_ray].newv;
+        df_touch(D, far);
         if (Y->out) {
             D->v[Y->newv].next = far;
             D->v[far].prev = Y->newv;
@@ -543,6 +551,7 @@ static wk_status resolve(df_state *D, double te) {
             return R->err.code;
         D->v[v].alive = 0;
         D->n_alive--;
+        df_touch(D, v);
     }
     /* 5. clean-up: pass-through vertices, cycles of one and two */
     for (uint32_t i = 0; i < S->n_f; i++) {
@@ -551,6 +560,7 @@ static wk_status resolve(df_state *D, double te) {
         if (D->v[x].next == x) {
             D->v[x].alive = 0;
             D->n_alive--;
+            df_touch(D, x);
         } else {
             unlink_vertex(D, x);
         }
@@ -566,6 +576,7 @@ static wk_status resolve(df_state *D, double te) {
         if (y == x) {
             D->v[x].alive = 0;
             D->n_alive--;
+            df_touch(D, x);
             continue;
         }
         if (D->v[y].next == x) {
@@ -577,6 +588,8 @@ static wk_status resolve(df_state *D, double te) {
                 return R->err.code;
             D->v[x].alive = D->v[y].alive = 0;
             D->n_alive -= 2;
+            df_touch(D, x);
+            df_touch(D, y);
             continue;
         }
         /* A zero-width spike (antiparallel pieces leaving x along one line)
