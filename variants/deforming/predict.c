@@ -369,6 +369,13 @@ static wk_status collect_cells(df_state *D, wk_point a0, wk_point b0, wk_point a
     return WK_OK;
 }
 
+/* collect_cells for the region piece a -> next(a) sweeps over [t, t1]. */
+static wk_status collect_piece_cells(df_state *D, uint32_t a, uint32_t gen, bool *big) {
+    const df_vertex *A = &D->v[a], *B = &D->v[A->next];
+    return collect_cells(D, df_pos(A, D->t), df_pos(B, D->t), df_pos(A, D->t1), df_pos(B, D->t1), gen,
+                         big);
+}
+
 static wk_status put(df_state *D, uint32_t *head, uint32_t c, uint32_t item, uint32_t ver) {
     if (WK_GROW(D->R, D->ent, D->cap_ent, D->n_ent + 1) != WK_OK) return D->R->err.code;
     D->ent[D->n_ent] = (df_entry){item, ver, head[c]};
@@ -382,12 +389,9 @@ static bool piece_valid(const df_state *D, uint32_t a, uint32_t ver) {
 
 /* Enter the piece a -> next(a) (its present version) from t to t1. */
 static wk_status insert_piece(df_state *D, uint32_t a) {
-    const df_vertex *A = &D->v[a], *B = &D->v[A->next];
     uint32_t gen = next_gen(D);
     bool big;
-    if (collect_cells(D, df_pos(A, D->t), df_pos(B, D->t), df_pos(A, D->t1), df_pos(B, D->t1),
-                      gen, &big) != WK_OK)
-        return D->R->err.code;
+    if (collect_piece_cells(D, a, gen, &big) != WK_OK) return D->R->err.code;
     if (big) {
         if (WK_GROW(D->R, D->big_piece, D->cap_big_piece, D->n_big_piece + 1) != WK_OK)
             return D->R->err.code;
@@ -485,12 +489,9 @@ static wk_status pair_update(df_state *D, uint32_t p, uint32_t a) {
 /* The vertices whose paths meet the (new) piece a -> next(a): each tested
 ** against it. */
 static wk_status piece_against_paths(df_state *D, uint32_t a) {
-    const df_vertex *A = &D->v[a], *B = &D->v[A->next];
     uint32_t gen = next_gen(D);
     bool big;
-    if (collect_cells(D, df_pos(A, D->t), df_pos(B, D->t), df_pos(A, D->t1), df_pos(B, D->t1),
-                      gen, &big) != WK_OK)
-        return D->R->err.code;
+    if (collect_piece_cells(D, a, gen, &big) != WK_OK) return D->R->err.code;
     if (big) {
         for (uint32_t p = 0; p < D->nv; p++)
             if (D->v[p].alive && pair_update(D, p, a) != WK_OK) return D->R->err.code;
