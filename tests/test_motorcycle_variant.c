@@ -17,9 +17,11 @@ Test(motorcycle_variant, every_allocation_failure_is_clean, .timeout = 300) {
     const wk_variant *V = variant("motorcycle");
     R.variant = V;
     wk_polygon *P = NULL;
-    /* coastline 400, seed 5: ray shots (so piece grid builds) and trace
-    ** extensions (so the trace grid) happen; asserted below */
-    cr_assert_eq(gen(&R, "coastline", 400, -1, 5, NULL, &P), WK_OK);
+    /* coastline 400, seed 4: ray shots (so piece grid builds) and trace
+    ** extensions with crossings (so the trace grid) happen; asserted below
+    ** (seed 5 lost its crossings when a cut by a piece of the trace's own
+    ** vertex became none: its extensions came from such cuts) */
+    cr_assert_eq(gen(&R, "coastline", 400, -1, 4, NULL, &P), WK_OK);
     size_t base = R.alloc.live;
     int failures = 0;
     for (int64_t N = 0;; N++) {

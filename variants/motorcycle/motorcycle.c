@@ -1071,6 +1071,20 @@ static double mc_next_time(void *ud) {
 static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t);
 static bool guards_ahead(const mc_state *A, const wk_wavefront *W, uint32_t si, double lam);
 
+/* Piece a is one of v''s own two pieces (T's vertex v').  Its line passes
+** through v', so it meets T only where v' is: nothing of T lies between v'
+** and that place, and a cut there would put F' on v''s own piece, or, over
+** its corner (facing_piece), on the piece beyond v''s neighbour: a split
+** with that piece at once.  Such a crossing X is v' passing X (T's front
+** event), not a start event.  (A PSLG: a trace extended from a far
+** terminal ran within 3e-10 of the terminal where T starts and crossed T
+** 4.5 eps_d ahead of it; the terminal's cap passed X as v' did, cut T, and
+** its F went onto the segment's other side: the whole component vanished,
+** tests/data/pslg/mc_thin_wedge.graphml.) */
+static bool own_piece(const wk_wavefront *W, const mc_seg *T, uint32_t a) {
+    return T->v != WK_NONE && (a == T->v || wk_wf_next(W, a) == T->v);
+}
+
 /* Of the pieces just before and after piece a, one that crosses trace T
 ** within WK_MC_STEINER_SLACK * eps_d of lam at time t and whose crossing
 ** moves towards T's near end; WK_NONE if neither does. */
@@ -1167,7 +1181,8 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         if (O->pa == a) continue;
         wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
         double lo = lambda_of(O, X);
-        if (unswept(W, O, lo, t) && cut(A, W, c.other, a, lo, sj, WK_NONE) != WK_OK)
+        if (unswept(W, O, lo, t) && !own_piece(W, O, a) &&
+            cut(A, W, c.other, a, lo, sj, WK_NONE) != WK_OK)
             return A->R->err.code;
     }
     T = &A->s[sj];
@@ -1338,7 +1353,8 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
                 uint32_t other = pick == cand[0] ? 1 : 0;
                 if (pick != WK_NONE && rate[other] > 0) far = cand[other];
             }
-            if (pick != WK_NONE && cut(A, W, sj, pick, lx, si, far) != WK_OK) return R->err.code;
+            if (pick != WK_NONE && !own_piece(W, T, pick) && cut(A, W, sj, pick, lx, si, far) != WK_OK)
+                return R->err.code;
         }
     }
     S = &A->s[si];
