@@ -462,6 +462,22 @@ static wk_status refresh(wk_wavefront *W) {
                 if (schedule(W, two[j]) != WK_OK) return R->err.code;
             }
         }
+        /* With holes a candidate may target a piece of another cycle that
+        ** the finder does not follow (one found by the split test's scan
+        ** rather than by the finder's own structure): when this group ended
+        ** that piece, the candidate is recomputed.  A stale one was resolved
+        ** as a split of a piece that no longer existed (arrangement, a hole
+        ** whose vertex targeted a piece of another hole that a third hole's
+        ** split had just ended: tests/test_near_touch.py --sweep 1000, case
+        ** 696).  O(vertices) per group with holes only, as the walk below. */
+        if (W->P->n_rings > 1 && W->n_fresh > 0)
+            for (uint32_t u = 0; u < W->nv; u++) {
+                wk_wf_vertex *U = &W->v[u];
+                if (!U->alive || U->seen == W->stamp || target_alive(W, U)) continue;
+                U->seen = W->stamp;
+                full_candidate(W, u);
+                if (schedule(W, u) != WK_OK) return R->err.code;
+            }
         return WK_OK;
     }
     for (uint32_t i = 0; i < W->n_fresh; i++) {
