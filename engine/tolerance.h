@@ -128,7 +128,10 @@
 ** only (tol_scale <= 1): the coarser retries of wk_solve_checked close such
 ** gaps as the tolerance sees them, where the cascade of sub-tolerance
 ** events after the first cannot be resolved consistently (constructed
-** vertices have no input coordinates to decide by). */
+** vertices have no input coordinates to decide by).  The same bar decides
+** the other side: a hit of the piece's line beyond x is no split
+** (wk_wf_split_test), and an input vertex behind the offset line of
+** another ring's edge never reaches it (wavefront.c, behind_offset_line). */
 #define WK_SPLIT_SIDE_ULPS 64.0
 /* ... and only when the stretch of the piece between x and the cut grows
 ** faster than this times the speeds of its ends: a stretch that shrinks

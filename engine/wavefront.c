@@ -87,6 +87,35 @@ wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk) {
     return wf_add_arc(W, x->node, sk, x->ein, x->eout);
 }
 
+/* True if input vertex u lies behind the offset line of edge e of another
+** ring now (W->t_now) by more than rounding, computed from the input
+** coordinates: u's distance from e's input line, measured from e's input
+** end nearer to u (a difference of input points: exact when they are
+** close, Sterbenz), plus the relative motion, so a gap of 1e-11 between
+** two rings keeps its sign and size, which positions relative to W->origin
+** (rounded to the coordinates' ulps, then compared with eps_d) would not.
+** Rounding: WK_SPLIT_SIDE_ULPS ulps (as wf_input_cut_side) of the gap and
+** of the motion, u's speed s counted as s + s^2 / w (its velocity is
+** solved from its edges' normals, with condition about s / w).  At the
+** nominal and finer tolerances only (W->input_sides), as every input-side
+** rule. */
+static bool behind_offset_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
+    const wk_polygon *P = W->P;
+    if (!W->input_sides || !wf_other_ring(W, u, e)) return false;
+    const wk_offset_line *L = &W->L[e];
+    const wk_wf_vertex *U = &W->v[u];
+    uint32_t x = e, y = wk_polygon_next(P, e);
+    double t = W->t_now;
+    wk_point dx = {P->p[u].x - P->p[x].x, P->p[u].y - P->p[x].y};
+    wk_point dy = {P->p[u].x - P->p[y].x, P->p[u].y - P->p[y].y};
+    wk_point r = fabs(dy.x) + fabs(dy.y) < fabs(dx.x) + fabs(dx.y) ? dy : dx;
+    double rate = L->nx * U->vel.x + L->ny * U->vel.y - L->w;
+    double d = L->nx * r.x + L->ny * r.y + rate * t;
+    double s = fabs(U->vel.x) + fabs(U->vel.y), wu = fmin(W->L[U->ein].w, W->L[U->eout].w);
+    double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (fabs(r.x) + fabs(r.y) + (s + s * s / wu + L->w) * t);
+    return d < -bar;
+}
+
 /* An input vertex u within eps_d of a line of edge e is near its piece
 ** only because the input puts it there: a vertex 6e-6 beyond a
 ** non-adjacent edge of a needle 1e6 long, the gap between them outside the
@@ -98,15 +127,25 @@ wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk) {
 ** A vertex that meets a piece comes from its front.  It never reaches the
 ** line when it lies strictly behind e's input line (exact test) and moves
 ** away from it (relative to the line, which moves forward at its weight).
+** Likewise, for e on another ring, when it lies behind e's offset line now
+** by more than rounding (behind_offset_line): it crossed that line before
+** now, outside every piece, and a piece the last group made on the line is
+** not near it (a hole's apex 7e-11 above a notch's tip passes the tip,
+** crosses the line of the tip's edge 4.5e-11 beyond it, and lies 5e-11
+** behind it when the tip splits the hole's edge: taken as a split now, of
+** the piece that split left on the tip's edge, the group rebuilt the same
+** vertices again and again, "no progress",
+** tests/data/holes/near_touch_apex_passes_notch_tip.wpoly).
 ** Only input vertices: a constructed vertex's place is a node eps_d wide,
 ** and one eps_d behind the line is not near the piece anyway.  The split
 ** test asks it too (wk_wf_split_test). */
 bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     const wk_polygon *P = W->P;
     if (u >= P->n || W->v[u].t0 != 0) return false;
-    if (wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
     const wk_offset_line *L = &W->L[e];
-    return L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
+    bool behind = wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) < 0 ||
+                  behind_offset_line(W, u, e);
+    return behind && L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
 }
 
 /* Where input vertex x is relative to input vertex y at time t: the input
@@ -257,6 +296,23 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     double sa = (p.x - pa.x) * L->ux + (p.y - pa.y) * L->uy;
     double sb = (pb.x - p.x) * L->ux + (pb.y - p.y) * L->uy;
     if (sa < -W->eps_d || sb < -W->eps_d) return;
+    /* Rings that nearly touch: where an input vertex meets the line of a
+    ** piece of another ring, within eps_d of an end that is an input
+    ** vertex, follows from the input coordinates (wf_input_cut_side, as in
+    ** plan_shields for a cut inside the piece).  Outside the piece by more
+    ** than rounding, it passes that end: no split of this piece (of the
+    ** neighbouring piece, if any, that piece's test says).  A hole's apex
+    ** 7e-11 above a notch's tip meets the line of the tip's edge 4.5e-11
+    ** beyond the tip, first; the event is the tip's split of the hole's
+    ** edge (CGAL's).  Taken for a split, the apex's hit made the tolerance
+    ** picture join the rings at a node whose new reflex vertex, between two
+    ** edges 0.02 rad from parallel, starts within eps_d of the piece it was
+    ** made next to, and split it at once, again and again ("no progress",
+    ** tests/data/holes/near_touch_apex_passes_notch_tip.wpoly). */
+    if (wf_other_ring(W, vi, A->eout) &&
+        ((sa <= W->eps_d && wf_input_cut_side(W, vi, a, L, 0, t) < 0) ||
+         (sb <= W->eps_d && wf_input_cut_side(W, vi, b, L, 1, t) < 0)))
+        return;
     if (t == s->t && s->a != WK_NONE && a > s->a) return; /* deterministic tie */
     refine(W, V, V->ein, V->eout, A->eout, &t, &p);
     s->t = t;
@@ -406,6 +462,22 @@ static wk_status refresh(wk_wavefront *W) {
                 if (schedule(W, two[j]) != WK_OK) return R->err.code;
             }
         }
+        /* With holes a candidate may target a piece of another cycle that
+        ** the finder does not follow (one found by the split test's scan
+        ** rather than by the finder's own structure): when this group ended
+        ** that piece, the candidate is recomputed.  A stale one was resolved
+        ** as a split of a piece that no longer existed (arrangement, a hole
+        ** whose vertex targeted a piece of another hole that a third hole's
+        ** split had just ended: tests/test_near_touch.py --sweep 1000, case
+        ** 696).  O(vertices) per group with holes only, as the walk below. */
+        if (W->P->n_rings > 1 && W->n_fresh > 0)
+            for (uint32_t u = 0; u < W->nv; u++) {
+                wk_wf_vertex *U = &W->v[u];
+                if (!U->alive || U->seen == W->stamp || target_alive(W, U)) continue;
+                U->seen = W->stamp;
+                full_candidate(W, u);
+                if (schedule(W, u) != WK_OK) return R->err.code;
+            }
         return WK_OK;
     }
     for (uint32_t i = 0; i < W->n_fresh; i++) {

@@ -134,8 +134,9 @@ wk_status wf_add_arc(wk_wavefront *W, uint32_t a, uint32_t b, uint32_t left, uin
 wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk);
 void wf_link(wk_wavefront *W, uint32_t a, uint32_t b);
 /* True if input vertex u (alive since t = 0) never reaches the offset line
-** of edge e: it lies strictly behind e's input line (exact test) and does
-** not approach it. */
+** of edge e: it does not approach it and lies strictly behind e's input
+** line (exact test) or, for e on another ring, behind e's offset line now
+** by more than rounding (from the input coordinates; W->input_sides). */
 bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e);
 /* True if input vertex u and input edge e lie on different rings. */
 static inline bool wf_other_ring(const wk_wavefront *W, uint32_t u, uint32_t e) {

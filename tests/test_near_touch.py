@@ -37,6 +37,10 @@ is not run.  A case the reader refuses (exit 1: rings touching after
 rounding) is dropped; more than a third dropped fails (the generator broke).
 The test asserts how many cases it compared.
 
+The cases fixed so far are files (tests/data/holes/near_touch_*.wpoly,
+with what went wrong in their first line), checked the same way
+(test_files; known failures in KNOWN_FILES).
+
 Environment: WSKEL_NEAR_TOUCH_CASES (default 40) for the test.
 """
 import argparse
@@ -204,7 +208,67 @@ def check_case(path, weighted, weights, bin_path=None, cgal=True):
     return fails, verdicts
 
 
+# The cases fixed so far, kept in tests/data/holes (test_holes.py checks
+# naive, arrangement and motorcycle there; this test adds deforming and CGAL).
+FILES_DIR = os.path.join(tl.DATA, "holes")
+FILES_PREFIX = "near_touch_"
+# Files with a known failure: name -> the check (label) every failure of the
+# file must come from; the test fails when one passes or fails otherwise.
+# deforming's contact test takes a vertex that meets a piece's line within
+# its contact distance beyond an end for a contact, where naive (= CGAL,
+# = the exact first event) decides the side from the input (engine,
+# wf_input_cut_side).  Open: deforming must follow (issue 11).
+KNOWN_FILES = {
+    "near_touch_tip_passes_apex_above_tol.wpoly": "deforming",
+    "near_touch_two_holes_deforming_contact.wpoly": "deforming",
+    # deforming differs on main too (not analysed; the file is arrangement's)
+    "near_touch_three_holes_stale_target.wpoly": "deforming",
+}
+
+
+def file_weights(path):
+    """(weighted, the weights in file order) of a .wpoly file."""
+    ws, left = [], 0
+    with open(path) as f:
+        for line in f:
+            line = line.split("#")[0].split()
+            if not line:
+                continue
+            if left == 0:
+                left = int(line[0])
+                continue
+            ws.append(float(line[2]) if len(line) > 2 else 1.0)
+            left -= 1
+    return any(w != 1 for w in ws), ws
+
+
 class NearTouch(unittest.TestCase):
+    def test_files(self):
+        """The fixed cases (tests/data/holes/near_touch_*.wpoly) under
+        the same oracles as the generated ones; every file is required."""
+        tl.need(tl.WSKEL, tl.WSKEL_CGAL)
+        names = sorted(f for f in os.listdir(FILES_DIR)
+                       if f.startswith(FILES_PREFIX) and f.endswith(".wpoly"))
+        self.assertGreaterEqual(len(names), 4, "tests/data/holes lost its near_touch_ files")
+        t = tl.Tally("near-touching rings, files")
+        for name in names:
+            path = os.path.join(FILES_DIR, name)
+            weighted, weights = file_weights(path)
+            res = check_case(path, weighted, weights)
+            if res[0] == "dropped":
+                t.case(["%s: the reader rejects it: %s" % (name, res[1])], path)
+                continue
+            fails = ["%s %s: %s" % (name, label, why) for label, why in res[0]]
+            if name in KNOWN_FILES:
+                if fails and all(label == KNOWN_FILES[name] for label, _ in res[0]):
+                    t.skip(name, "known failures (KNOWN_FILES)")
+                    continue
+                fails = fails or ["%s: known failure of %s passes now: remove it from KNOWN_FILES"
+                                  % (name, KNOWN_FILES[name])]
+            t.case(fails, path)
+        t.report(self, list_skipped=["known failures (KNOWN_FILES)"])
+        self.assertEqual(t.cases + len(KNOWN_FILES), len(names), t.summary())
+
     def test_generated(self):
         tl.need(tl.WSKEL, tl.WSKEL_CGAL)
         t = tl.Tally("near-touching rings")
