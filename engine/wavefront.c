@@ -653,7 +653,6 @@ done:
     WK_FREE_ARRAY(R, W.L, P->n);
     WK_FREE_ARRAY(R, W.v, W.cap_v);
     WK_FREE_ARRAY(R, W.seeds, W.cap_seeds);
-    WK_FREE_ARRAY(R, W.seed_cl, W.cap_seed_cl);
     WK_FREE_ARRAY(R, W.forced, W.cap_forced);
     WK_FREE_ARRAY(R, W.comp, W.cap_comp);
     WK_FREE_ARRAY(R, W.cl, W.cap_cl);

@@ -89,7 +89,6 @@ struct wk_wavefront {
     uint32_t stamp;
     /* group scratch, kept between groups */
     uint32_t *seeds; uint32_t n_seeds, cap_seeds;
-    uint32_t *seed_cl; uint32_t cap_seed_cl; /* plan_slow_stretches: each seed's node, ECHO_BIT */
     uint32_t *deferred; uint32_t n_deferred, cap_deferred; /* events within eps_t left for a later group */
     double t_last;     /* the latest seed time of the group (t <= t_last <= t + eps_t) */
     uint32_t *forced; uint32_t n_forced, cap_forced;
