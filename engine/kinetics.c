@@ -9,6 +9,7 @@
 */
 #include "kinetics.h"
 
+#include <float.h>
 #include <math.h>
 
 /* The parallel bars WK_PARALLEL_SIN and WK_ANTIPARALLEL_SIN, and why they
@@ -83,6 +84,20 @@ bool wk_offset_lines_meet(const wk_offset_line *a, const wk_offset_line *b, doub
     p->x = (ca * b->ny - a->ny * cb) / det;
     p->y = (a->nx * cb - ca * b->nx) / det;
     return true;
+}
+
+bool wk_stretch_collapses_later(const wk_offset_line *L, wk_point q, wk_point vq, wk_point px,
+                                wk_point vx, bool x_after, double eps_t) {
+    double d = (px.x - q.x) * L->ux + (px.y - q.y) * L->uy;
+    double rate = (vx.x - vq.x) * L->ux + (vx.y - vq.y) * L->uy;
+    if (!x_after) {
+        d = -d;
+        rate = -rate;
+    }
+    double speeds = fabs(vq.x) + fabs(vq.y) + fabs(vx.x) + fabs(vx.y);
+    double ulp = DBL_EPSILON * (fabs(q.x) + fabs(q.y));
+    if (!(rate < -WK_SPLIT_SIDE_GROWTH_REL * speeds)) return false; /* grows or keeps its length */
+    return d + rate * eps_t > WK_BEHIND_ULPS * ulp;
 }
 
 bool wk_is_reflex_turn(const wk_offset_line *a, const wk_offset_line *b) {

@@ -78,6 +78,18 @@ bool wk_three_lines_meet(const wk_offset_line *a, const wk_offset_line *b,
 ** double lines put the event 5.5e-6 early (5 eps_t), this 4.7e-10 early. */
 bool wk_three_edges_meet(const wk_polygon *P, uint32_t e1, uint32_t e2, uint32_t e3, wk_point o,
                          wk_point *p, double *t);
+/* A stretch of offset line L joins a vertex born now at q (velocity vq) to
+** vertex x at px (velocity vx), x after q along L (x_after) or before it;
+** x is within the tolerance of q.  True if the stretch collapses later, not
+** now: it shrinks faster than parallel motion at the tolerance
+** (WK_SPLIT_SIDE_GROWTH_REL of the two speeds) and is still longer than the
+** rounding of q (WK_BEHIND_ULPS ulps) after eps_t.  The same relative motion
+** along the line as an edge event, so the same rule as the wavefront's edge
+** events: x then does not arrive at q, and the stretch's own collapse is a
+** later event.  A stretch that grows or keeps its length is left to the
+** tolerance picture (false). */
+bool wk_stretch_collapses_later(const wk_offset_line *L, wk_point q, wk_point vq, wk_point px,
+                                wk_point vx, bool x_after, double eps_t);
 /* True if turning from edge direction a to edge direction b is a right turn
 ** (the vertex between them is reflex).  Exact on the input directions. */
 bool wk_is_reflex_turn(const wk_offset_line *a, const wk_offset_line *b);

@@ -137,7 +137,11 @@
 ** faster than this times the speeds of its ends: a stretch that shrinks
 ** collapses at once into what the tolerance picture makes now, and one that
 ** keeps its length would stay below eps_d for good.  1e-9, the relative
-** bar of WK_PARALLEL_SIN: slower is parallel motion at the tolerance. */
+** bar of WK_PARALLEL_SIN: slower is parallel motion at the tolerance.  The
+** same bar, and WK_BEHIND_ULPS for the rounding of the node, decide which
+** stretch shrinks so slowly that it collapses later than eps_t
+** (wk_stretch_collapses_later, plan_slow_stretches in wavefront_group.c):
+** "at once" above holds only for stretches that shrink fast. */
 #define WK_SPLIT_SIDE_GROWTH_REL 1e-9
 /* --check-invariants: a vertex lies on its edges' offset lines within this
 ** many (eps_d + speed * eps_t), times (1 + t) for the growth of rounding with

@@ -446,6 +446,17 @@ void wk_wf_last_group(const wk_wavefront *W, const uint32_t **fresh, uint32_t *n
 static wk_status refresh(wk_wavefront *W) {
     wk_run *R = W->R;
     W->stamp++;
+    /* A seed the group passed by (a split that met its piece's end only at
+    ** the tolerance, shielded from the node: wavefront_group.c,
+    ** plan_slow_stretches) is still alive, its candidate popped and its
+    ** target piece possibly gone: a new candidate. */
+    for (uint32_t i = 0; i < W->n_seeds; i++) {
+        uint32_t u = W->seeds[i];
+        if (!W->v[u].alive || W->v[u].seen == W->stamp) continue;
+        W->v[u].seen = W->stamp;
+        full_candidate(W, u);
+        if (schedule(W, u) != WK_OK) return R->err.code;
+    }
     if (W->finder->local_refresh) {
         /* The finder keeps its split candidates current itself: only the
         ** fresh vertices and the ones whose next changed need new

@@ -9,7 +9,9 @@
 **   1. nodes: cluster the event points (distance tolerance) and collect the
 **      vertices that take part (plan_nodes);
 **   2. every vertex of the touched cycles within tolerance of a node arrives
-**      there (plan_arrivals); every piece passing through a node is cut
+**      there (plan_arrivals), unless shielded from it: across a gap between
+**      rings (plan_shields) or by a stretch that collapses later
+**      (plan_slow_stretches); every piece passing through a node is cut
 **      there (plan_pinches, plan_seed_cuts);
 **   3. the cycles become directed sub-pieces between points (nodes or
 **      untouched vertices); zero-length sub-pieces vanish (edge events);
@@ -350,6 +352,114 @@ static wk_status plan_shields(wk_wavefront *W, double t) {
     return WK_OK;
 }
 
+/* Step 1c, slow stretches.  A vertex x that is no seed of the group (or a
+** seed whose split lands beyond its target piece's end: an echo) lies
+** within tolerance of a node only; where it is joined to the node by a
+** stretch of an offset line (x a neighbour of the seed along the seed's
+** line, or an end of a split's target piece), it arrives there only if that
+** stretch collapses now.  The stretch runs between x and the new vertex the
+** seed's event makes on its line; it collapses when the two meet, the same
+** relative motion along the line as an edge event (edge_event in
+** wavefront.c), and the same rule decides: a stretch that shrinks so slowly
+** that it is still longer than rounding after eps_t collapses later, not
+** now (x is shielded from the node).  Merged at once, the node joins the
+** stretch's two other lines, and where those are nearly parallel the
+** vertex between them then runs its whole life far from their crossing: a
+** weighted comb whose tooth edge ends 5.1e-3 (0.6 eps_d) from a split,
+** the stretch shrinking at 8.9e-5 (between edges of equal weight at a sine
+** of 3e-5), put the vertex between those edges 173 units from their
+** crossing and the spike meeting it 141 units off the exact node
+** (tests/data/fuzz/mismatch_deforming_weighted_comb_spike.wpoly;
+** tests/data/degenerate/comb_far_slow_stretch.wpoly: a node 2% of the diagonal
+** from CGAL's).  Stretches that keep
+** their length (slower than WK_SPLIT_SIDE_GROWTH_REL: parallel at the
+** tolerance) or grow, and the coarser retries (input_sides), keep the
+** tolerance picture, as do nodes with more than one seed or a forced
+** vertex, where the new vertex at the node is not known before pairing. */
+static wk_status shield_slow_stretch(wk_wavefront *W, uint32_t k, wk_point q, uint32_t x,
+                                     uint32_t piece, uint32_t e, wk_point vnew, bool x_after,
+                                     double t) {
+    const wk_wf_vertex *X = &W->v[x];
+    if (!X->alive || X->seen != W->stamp || shield_of(W, x, k)) return WK_OK;
+    if (!wk_stretch_collapses_later(&W->L[e], q, vnew, wk_wf_pos(X, t), X->vel, x_after, W->eps_t))
+        return WK_OK;
+    if (WK_GROW(W->R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return W->R->err.code;
+    W->shield[W->n_shield++] = (wk_wf_shield){x, k, piece};
+    return WK_OK;
+}
+
+/* True if seed x is a split that lands outside its target piece (beyond
+** an end by more than rounding, within the split test's eps_d): it meets
+** that end's vertex only at the tolerance, the echo of whatever that vertex
+** does there. */
+static bool split_misses_piece(const wk_wavefront *W, uint32_t x, double t) {
+    const wk_wf_vertex *X = &W->v[x];
+    if (X->ev_kind != WK_WF_SPLIT || !W->v[X->ev_a].alive || W->v[X->ev_a].next != X->ev_b) return false;
+    const wk_offset_line *L = &W->L[W->v[X->ev_a].eout];
+    wk_point pa = wk_wf_pos(&W->v[X->ev_a], t), pb = wk_wf_pos(&W->v[X->ev_b], t), q = X->ev_p;
+    double sa = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
+    double sb = (pb.x - q.x) * L->ux + (pb.y - q.y) * L->uy;
+    double ulp = DBL_EPSILON * (fabs(q.x) + fabs(q.y));
+    return sa < -WK_BEHIND_ULPS * ulp || sb < -WK_BEHIND_ULPS * ulp;
+}
+
+/* The seed's stretches: for each vertex x joined to the seed's new vertex
+** at its node (velocity vnew) along line e, shield x if that stretch
+** collapses later.  O(seeds * nodes), as plan_nodes: each seed's node is
+** found once and kept in its `at` (ECHO_BIT for an echo; plan_arrivals sets
+** every `at` afresh, and they are reset here), the real seeds per node
+** counted in the node's `count` (plan_slots resets it).  No scratch array:
+** a group of a comb's 1500 teeth is 1% of naive's peak memory. */
+#define ECHO_BIT 0x80000000u
+static wk_status plan_slow_stretches(wk_wavefront *W, double t) {
+    if (!W->input_sides || W->n_forced) return WK_OK;
+    for (uint32_t k = 0; k < W->n_cl; k++) W->cl[k].count = 0;
+    for (uint32_t i = 0; i < W->n_seeds; i++) {
+        uint32_t s = W->seeds[i], k = find_cluster(W, W->v[s].ev_p);
+        bool echo = split_misses_piece(W, s, t);
+        W->v[s].at = k == WK_NONE ? WK_NONE : echo ? k | ECHO_BIT : k;
+        if (k != WK_NONE && !echo) W->cl[k].count++;
+    }
+    wk_status st = WK_OK;
+    for (uint32_t i = 0; i < W->n_seeds && st == WK_OK; i++) {
+        /* s must be its node's only seed but for echoes, which are
+        ** candidates like any other vertex */
+        uint32_t s = W->seeds[i], k = W->v[s].at;
+        if (k == WK_NONE || (k & ECHO_BIT) || W->cl[k].count != 1) continue;
+        const wk_wf_vertex *S = &W->v[s];
+        uint32_t n0 = W->n_shield;
+        wk_point vy, q = S->ev_p;
+        if (S->ev_kind == WK_WF_EDGE) {
+            /* the piece s -> b collapses: the new vertex sits between
+            ** s.ein and b.eout, s.prev comes to it along s.ein and b.next
+            ** leaves it along b.eout */
+            uint32_t b = S->next, xp = S->prev, xn = W->v[b].next;
+            if (xp == b || xn == s || xp == xn) continue; /* a triangle collapses whole */
+            if (wk_vertex_velocity(&W->L[S->ein], &W->L[W->v[b].eout], &vy) != WK_VEL_REGULAR) continue;
+            if ((st = shield_slow_stretch(W, k, q, xp, xp, S->ein, vy, false, t)) == WK_OK)
+                st = shield_slow_stretch(W, k, q, xn, b, W->v[b].eout, vy, true, t);
+        } else if (S->ev_kind == WK_WF_SPLIT) {
+            /* s cuts the piece a -> b of line l: a -> (l, s.eout) -> s.next
+            ** and s.prev -> (s.ein, l) -> b */
+            uint32_t a = S->ev_a, b = S->ev_b;
+            if (!W->v[a].alive || W->v[a].next != b) continue;
+            uint32_t l = W->v[a].eout;
+            if (wk_vertex_velocity(&W->L[l], &W->L[S->eout], &vy) == WK_VEL_REGULAR &&
+                (st = shield_slow_stretch(W, k, q, a, a, l, vy, false, t)) == WK_OK)
+                st = shield_slow_stretch(W, k, q, S->next, s, S->eout, vy, true, t);
+            if (st == WK_OK && wk_vertex_velocity(&W->L[S->ein], &W->L[l], &vy) == WK_VEL_REGULAR &&
+                (st = shield_slow_stretch(W, k, q, b, a, l, vy, true, t)) == WK_OK)
+                st = shield_slow_stretch(W, k, q, S->prev, S->prev, S->ein, vy, false, t);
+        }
+        /* a shielded echo takes no part: the node is the stretch's end, the
+        ** point of the seed that stays */
+        for (uint32_t m = n0; m < W->n_shield; m++)
+            if (W->v[W->shield[m].vertex].at == (k | ECHO_BIT)) W->cl[k].p = q;
+    }
+    for (uint32_t i = 0; i < W->n_seeds; i++) W->v[W->seeds[i]].at = WK_NONE;
+    return st == WK_OK ? WK_OK : W->R->err.code;
+}
+
 /* Step 2a: every vertex within tolerance of a node arrives there (unless
 ** shielded from it). */
 static void plan_arrivals(wk_wavefront *W, double t) {
@@ -370,12 +480,14 @@ static void plan_arrivals(wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < W->n_comp; i++) {
         wk_wf_vertex *u = &W->v[W->comp[i]];
         uint32_t kp = W->v[u->prev].at;
-        if (u->at == WK_NONE && kp != WK_NONE && kp == W->v[u->next].at && u->prev != u->next)
+        if (u->at == WK_NONE && kp != WK_NONE && kp == W->v[u->next].at && u->prev != u->next &&
+            !(W->n_shield && shield_of(W, W->comp[i], kp)))
             u->at = kp;
     }
     for (uint32_t i = 0; i < W->n_seeds; i++) {
         wk_wf_vertex *u = &W->v[W->seeds[i]];
-        if (u->at == WK_NONE) u->at = find_cluster(W, u->ev_p);
+        if (u->at == WK_NONE && !(W->n_shield && shield_of(W, W->seeds[i], find_cluster(W, u->ev_p))))
+            u->at = find_cluster(W, u->ev_p);
         if (u->ev_kind == WK_WF_EDGE && W->v[u->next].at == WK_NONE) W->v[u->next].at = u->at;
     }
 }
@@ -751,7 +863,8 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
     *again = false;
     W->n_cl = W->n_pin = W->n_sub = W->n_pair = 0;
-    if (plan_nodes(W, t) != WK_OK || plan_shields(W, t) != WK_OK) return R->err.code;
+    if (plan_nodes(W, t) != WK_OK || plan_shields(W, t) != WK_OK || plan_slow_stretches(W, t) != WK_OK)
+        return R->err.code;
     plan_arrivals(W, t);
     if (W->local_walk && !local_walk_suffices(W, t)) {
         /* the group reaches beyond the local walk: take whole cycles */

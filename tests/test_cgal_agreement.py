@@ -509,6 +509,22 @@ class TestHandMade(unittest.TestCase):
         finally:
             shutil.rmtree(work, ignore_errors=True)
 
+    def test_slow_stretch_agrees(self):
+        """A comb 0.004 across at (1e6, -2e6), turned: a tooth's wall ends
+        5e-12 (eps_d 5.07e-12) from a split, and the stretch between them
+        shrinks at 3e-8.  Merged at once (the tolerance picture), naive and
+        monotone put a node 2% of the diagonal from CGAL's; kept (the
+        engine's plan_slow_stretches, monotone's arrives_now) both agree."""
+        need(WSKEL, WSKEL_CGAL)
+        work = tempfile.mkdtemp(prefix="wskel-stretch-")
+        try:
+            path = os.path.join(tl.DATA, "degenerate", "comb_far_slow_stretch.wpoly")
+            outcomes = [agree("comb_far_slow_stretch." + v, path, work, v)
+                        for v in ("naive", "monotone", "arrangement")]
+            report(self, "CGAL agreement, slow stretch", outcomes)
+        finally:
+            shutil.rmtree(work, ignore_errors=True)
+
 
 # ------------------------------------------------- needles far out
 

@@ -507,3 +507,41 @@ Test(kinetics, vertex_start_kinds_and_reflexness) {
                  wk_vertex_velocity(&L[1], &L[0], &v));
     cr_assert(vel.x == v.x && vel.y == v.y);
 }
+
+/* wk_stretch_collapses_later, on the stretch of the comb spike
+** (tests/data/fuzz/mismatch_deforming_weighted_comb_spike.wpoly at
+** t = 110/7): a wall x = 660 + 3t going down (weight 3), the vertex born
+** on it 5.14e-3 above the vertex x at its lower end, the born one between
+** the wall and an edge at a sine of 3e-5 to x's other edge (both weight
+** 3), so the two close in at 8.9e-5: 58 time units, not now.  The closed
+** form: the stretch's length d (from the born vertex towards x along the
+** line's direction, or back) shrinks at -rate; it collapses later iff
+** rate < 0 beyond the parallel bar and d + rate eps_t exceeds rounding. */
+Test(kinetics, stretch_collapses_later_only_when_it_shrinks_slowly) {
+    wk_offset_line L = line(pt(660, 709), pt(660, 259), 3); /* direction (0, -1) */
+    double eps_t = 2.02e-6;
+    wk_point q = pt(707.1428571428571, 211.86228043697596), vq = pt(3, -3.0000891);
+    wk_point px = pt(707.1428571428571, 211.85714285714286), vx = pt(3, -3);
+    /* x after the born vertex along the line (below it): slow, later */
+    cr_assert(wk_stretch_collapses_later(&L, q, vq, px, vx, true, eps_t));
+    /* the same stretch seen from the other end (x before q along the line:
+    ** swap the roles), still later */
+    cr_assert(wk_stretch_collapses_later(&L, px, vx, q, vq, false, eps_t));
+    /* fast: shrinking at 4, gone within a window of 2e-3 (now), not within
+    ** 2e-6 (later) */
+    wk_point vfast = pt(3, -7);
+    cr_assert_not(wk_stretch_collapses_later(&L, q, vfast, px, vx, true, 2e-3));
+    cr_assert(wk_stretch_collapses_later(&L, q, vfast, px, vx, true, eps_t));
+    /* growing, or keeping its length (parallel motion): the tolerance
+    ** picture, false */
+    cr_assert_not(wk_stretch_collapses_later(&L, q, pt(3, 1), px, vx, true, eps_t));
+    cr_assert_not(wk_stretch_collapses_later(&L, q, vx, px, vx, true, eps_t));
+    cr_assert_not(wk_stretch_collapses_later(&L, q, pt(3, -3 - 1e-12), px, vx, true, eps_t));
+    /* x on the wrong side (the stretch has negative length: already
+    ** collapsed) or within rounding of q: now */
+    cr_assert_not(wk_stretch_collapses_later(&L, q, vq, px, vx, false, eps_t));
+    wk_point far = pt(4e6, 0), vfar = pt(0, 1);
+    wk_offset_line H = line(pt(0, 0), pt(1, 0), 1); /* direction (1, 0) */
+    cr_assert_not(wk_stretch_collapses_later(&H, far, vfar, pt(4e6 + 1e-10, 0), pt(-1, 1), true, 1e-20));
+    cr_assert(wk_stretch_collapses_later(&H, far, vfar, pt(4e6 + 1e-3, 0), pt(-1, 1), true, 1e-20));
+}

@@ -209,3 +209,45 @@ Test(wavefront, split_search_finds_the_notch_split) {
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
 }
+
+/* A stretch that shrinks slowly is no arrival (plan_slow_stretches).  The
+** weighted comb with a spike of tests/data/fuzz/
+** mismatch_deforming_weighted_comb_spike.wpoly: at t = 110/7 a reflex
+** vertex splits a tooth's wall 5.14e-3 (0.6 eps_d) above the wall's lower
+** end, and the stretch left between them shrinks at 8.9e-5 (their other
+** edges, 3 and 8, both weight 3, meet at a sine of 3e-5).  Merged at once,
+** edges 3 and 8 were made neighbours 173 units from their crossing, and
+** the spike (edges 2 and 3, moving at 1.3e5) ended there, 141 units from
+** the exact end of the skeleton: where faces 2, 7, 8 and 2, 3, 7 meet, by
+** the offset lines in 80-digit arithmetic (tests/exact_nodes.py). */
+Test(wavefront, slow_stretch_is_no_arrival) {
+    static const double x[] = {0,   990, 907049, 8075800, 880, 770, 770, 660, 660, 550,
+                               550, 440, 440,    330,     330, 220, 220, 111, 110, 0};
+    static const double y[] = {3,   0,   9,   19,  259, 259, 709, 709, 259, 259,
+                               709, 709, 259, 259, 719, 709, 259, 259, 709, 709};
+    static const double w[] = {1, 2, 1, 3, 1, 4, 1, 3, 3, 2, 3, 4, 3, 2, 3, 3, 4, 1, 3, 3};
+    static const double exact[2][3] = {
+        {848.448073679657568, 70.551926320342446, 62.816024559885854}, /* faces 2, 7, 8 */
+        {848.448776932460078, 70.552160738924286, 62.816258977486697}, /* faces 2, 3, 7 */
+    };
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = polygon(&R, 20, x, y, w);
+    probe p;
+    probe_init(&p);
+    wk_skeleton *S = NULL;
+    cr_assert_eq(wk_wavefront_run(&R, P, &probe_finder, &p, &S), WK_OK, "%s", R.err.msg);
+    cr_assert_eq(wk_validate(&R, P, S, 0, NULL), WK_OK, "%s", R.err.msg);
+    cr_assert(p.consistent);
+    for (int k = 0; k < 2; k++) {
+        double best = INFINITY;
+        for (uint32_t i = P->n; i < S->n_nodes; i++)
+            best = fmin(best, fmax(fmax(fabs(S->nodes[i].x - exact[k][0]), fabs(S->nodes[i].y - exact[k][1])),
+                                   fabs(S->nodes[i].t - exact[k][2])));
+        cr_assert(best < 1e-6, "no node within 1e-6 of (%.15g, %.15g), t = %.15g: nearest %g",
+                  exact[k][0], exact[k][1], exact[k][2], best);
+    }
+    wk_skeleton_free(&R, S);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}

@@ -177,7 +177,9 @@ static wk_status schedule(sim *S, uint32_t a) {
     double d = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
     double rate = (B->vel.x - A->vel.x) * L->ux + (B->vel.y - A->vel.y) * L->uy;
     double t;
-    if (d <= S->M->eps_d && rate <= 0) t = t0;
+    /* as the reference's edge events: a piece below eps_d collapses now
+    ** unless it shrinks so slowly that now would be more than eps_t early */
+    if (d <= S->M->eps_d && rate <= 0 && (d <= 0 || -rate * S->M->eps_t >= d || rate == 0)) t = t0;
     else if (rate < 0) t = t0 + (d > 0 ? d : 0) / -rate;
     else {
         wk_event_queue_remove(S->M->R, &S->Q, a);
@@ -208,6 +210,24 @@ static bool arrives(const sim *S, uint32_t x, wk_point at, double t) {
     double speed = fabs(v->vel.x) + fabs(v->vel.y);
     double r = S->M->eps_d + (t > 0 ? speed * S->M->eps_t : 0);
     return dist2(wk_mono_trace_at(v, t), at) <= r * r;
+}
+
+/* ... unless the stretch of line e (ein for x = P before the vertex being
+** born at `at` between ein and eout, eout for x = Q after it) collapses
+** later (wk_stretch_collapses_later; the reference's group resolution,
+** plan_slow_stretches in engine/wavefront_group.c, decides alike). */
+static bool arrives_now(const sim *S, uint32_t x, wk_point at, double t, uint32_t ein,
+                        uint32_t eout, bool x_after) {
+    if (!arrives(S, x, at, t)) return false;
+    const mono_trace *v = &S->C->v[x];
+    wk_point vq;
+    /* at the nominal tolerance and finer only, as the reference (its
+    ** coarser retries keep the tolerance picture) */
+    if (t <= 0 || v->flat || S->M->R->opt.tol_scale > 1 ||
+        wk_vertex_velocity(&S->M->L[ein], &S->M->L[eout], &vq) != WK_VEL_REGULAR)
+        return true;
+    return !wk_stretch_collapses_later(&S->M->L[x_after ? eout : ein], at, vq,
+                                       wk_mono_trace_at(v, t), v->vel, x_after, S->M->eps_t);
 }
 
 static void link(sim *S, uint32_t a, uint32_t b) {
@@ -385,12 +405,12 @@ static wk_status resolve(sim *S, uint32_t node, uint32_t P, uint32_t Q, uint32_t
     mono_chain *C = S->C;
     for (uint32_t guard = 0; guard <= 2 * C->m + 8; guard++) {
         wk_point at = C->node[node].p;
-        while (P != WK_NONE && arrives(S, P, at, t)) {
+        while (P != WK_NONE && arrives_now(S, P, at, t, ein, eout, false)) {
             terminate(S, P, node);
             ein = C->v[P].ein;
             P = C->v[P].prev;
         }
-        while (Q != WK_NONE && arrives(S, Q, at, t)) {
+        while (Q != WK_NONE && arrives_now(S, Q, at, t, ein, eout, true)) {
             terminate(S, Q, node);
             eout = C->v[Q].eout;
             Q = C->v[Q].next;
