@@ -102,11 +102,14 @@ wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk) {
 ** and one eps_d behind the line is not near the piece anyway.  The split
 ** test asks it too (wk_wf_split_test). */
 bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
-    const wk_polygon *P = W->P;
-    if (u >= P->n || W->v[u].t0 != 0) return false;
-    if (wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
-    const wk_offset_line *L = &W->L[e];
-    return L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
+    if (u >= W->P->n || W->v[u].t0 != 0) return false;
+    return wk_input_vertex_never_reaches_line(W->R, W->P, u, W->v[u].vel, &W->L[e], e);
+}
+
+bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t u, wk_point vel,
+                                        const wk_offset_line *L, uint32_t e) {
+    if (wk_orient2d_counted(R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
+    return L->nx * vel.x + L->ny * vel.y - L->w <= 0;
 }
 
 /* Where input vertex x is relative to input vertex y at time t: the input
