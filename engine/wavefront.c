@@ -143,9 +143,17 @@ bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     const wk_polygon *P = W->P;
     if (u >= P->n || W->v[u].t0 != 0) return false;
     const wk_offset_line *L = &W->L[e];
+    /* exactly behind the input line (as wk_input_vertex_never_reaches_line), or behind another ring's edge line by
+    ** more than rounding (behind_offset_line); either way not approaching it */
     bool behind = wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) < 0 ||
                   behind_offset_line(W, u, e);
     return behind && L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
+}
+
+bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t u, wk_point vel,
+                                        const wk_offset_line *L, uint32_t e) {
+    if (wk_orient2d_counted(R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
+    return L->nx * vel.x + L->ny * vel.y - L->w <= 0;
 }
 
 /* Where input vertex x is relative to input vertex y at time t: the input

@@ -123,6 +123,17 @@ void wk_wf_split_scan(wk_wavefront *W, uint32_t v);
 ** O(1) unless v sits in a chain of such edges. */
 void wk_wf_near_split(wk_wavefront *W, uint32_t v);
 
+/* The rule of the split test for input vertices (wavefront.c): input
+** vertex u of P, moving at vel since t = 0 (the caller knows it is alive
+** since then), never reaches the offset line L of input edge e when it lies
+** strictly behind e's input line (an exact orientation) and does not
+** approach the line (n . vel - w <= 0): it is within eps_d of the piece only
+** because the input puts it there (a crack outside the polygon between
+** them, the chamfer of a reflex corner shorter than eps_d).  For a variant
+** with its own wavefront, so that its contacts follow the engine's. */
+bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t u, wk_point vel,
+                                        const wk_offset_line *L, uint32_t e);
+
 /* ------------------------------------- rays along a segment (wavefront_ray.c)
 ** For finders that follow a moving Steiner vertex along a static segment
 ** o + lambda u (u a unit vector, relative coordinates): 000's segments,

@@ -132,6 +132,33 @@ class Deforming(unittest.TestCase):
         t.report(self)
         self.assertEqual(t.cases, 7 * 4)
 
+    # Files of tests/data/degenerate that the variant hands to the reference
+    # (reference_fallbacks 1; the test fails when one no longer does: take it
+    # out).  test_degenerate.py compares every variant's skeleton with
+    # naive's, and the reference's answer passes there, so a regression input
+    # of a fallback (deform_star_spike_next_but_one.wpoly: star n = 2e4, a
+    # contact that was an edge swap) is checked here.
+    FALLBACK_FILES = {"mono_snap_skips_wall.wpoly", "mono_snap_window.wpoly", "square6.wpoly"}
+
+    def test_degenerate_files_without_fallback(self):
+        data = os.path.join(tl.DATA, "degenerate")
+        names = sorted(f for f in os.listdir(data) if f.endswith(".wpoly"))
+        fails = []
+        for f in names:
+            rc, got, err = self.deforming(os.path.join(data, f))
+            if rc != 0:
+                fails.append("%s: exit %s: %s" % (f, rc, err.strip()[:200]))
+                continue
+            fell = stat(got, "reference_fallbacks") != 0
+            if fell != (f in self.FALLBACK_FILES):
+                fails.append("%s: reference_fallbacks %d, %s" % (
+                    f, stat(got, "reference_fallbacks"),
+                    "remove it from FALLBACK_FILES" if f in self.FALLBACK_FILES
+                    else "the variant must answer it itself"))
+        self.assertEqual(fails, [])
+        self.assertIn("deform_star_spike_next_but_one.wpoly", names)
+        self.assertGreaterEqual(len(names), 30)
+
     # ------------------------------------------- zero and negative weights
 
     def roof(self, pts, ws, height, *extra):

@@ -59,18 +59,11 @@ KNOWN_FAILURES = {}
 KNOWN_GENERATED = {}
 # Files of tests/data/degenerate with a known failure (name -> the text every
 # failure line must hold; the test fails when one passes or fails otherwise).
-# Tiny reflex chamfers (9.5e-12 .. 1e-7): since the split test leaves alone
-# the pieces an input vertex lies strictly behind (engine, issue 11 needles),
-# naive grows the chamfer into a face as CGAL does (arr_chamfer_contact:
-# naive = CGAL, checked in test_pslg too); deforming still resolves the
-# unchamfered corner.  Open: deforming must follow (issue 11).
-KNOWN_FILES = {
-    "arr_chamfer_contact.wpoly": "deforming differs from naive",
-    "deform_mixed_grid_chamfers_00206.wpoly": "deforming differs from naive",
-    "deform_tiny_reflex_chamfer_00105.wpoly": "deforming differs from naive",
-    "deform_tiny_reflex_chamfer_00220.wpoly": "deforming differs from naive",
-    "deform_tiny_reflex_chamfer_00243.wpoly": "deforming differs from naive",
-}
+# Empty now: the tiny reflex chamfers (arr_chamfer_contact,
+# deform_*chamfer*), where deforming resolved the unchamfered corner while
+# naive grows the chamfer into a face as CGAL does, agree since deforming
+# asks the engine's exactly-behind rule (wk_input_vertex_never_reaches_line).
+KNOWN_FILES = {}
 DATA = os.path.join(tl.DATA, "degenerate")
 # Kinds of skipped inputs (Tally.skip): counted and every one named in the
 # report; the tests say which inputs are required (a skip is a failure).

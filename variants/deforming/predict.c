@@ -25,6 +25,7 @@
 ** tested against everything instead.
 */
 #include "deforming.h"
+#include "wavefront.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -149,17 +150,17 @@ static double dist2(wk_point a, wk_point b) {
 ** now: skipping them would lose the event and leave a spike alive.
 ** A reflex input vertex v and another input vertex w (ids below the
 ** input's n) at the ends of one input edge did not come out of one
-** point: the edge is shorter than the contact distance, its direction
-** the tolerance cannot tell, and v meets the piece at w at t = 0, as a
-** reflex vertex
-** within eps_d of a piece's line splits it at once in the engine's
-** wavefront (whose split search asks reflex vertices only).  Skipping them
-** kept a sub-tolerance chamfer of a reflex corner growing, and with
-** weights its face took a wedge of the neighbours' regions
-** (tests/data/degenerate/deform_tiny_reflex_chamfer_*.wpoly, stress cases
-** of the quick sweep).  A convex or straight vertex at the
-** end of a tiny edge stays: there the edge collapses or grows by the
-** motion of its ends (an edge swap, or none), again as in the engine.
+** point: the edge is shorter than the contact distance, and v meets the
+** piece at w at t = 0, as a reflex vertex within eps_d of a piece's line
+** splits it at once in the engine's wavefront (whose split search asks
+** reflex vertices only), unless v lies exactly behind that piece's input
+** line (test_penetration asks the engine's rule,
+** wk_input_vertex_never_reaches_line): then, as in the engine and CGAL,
+** the tiny edge (a reflex corner's chamfer) grows into a face
+** (tests/data/degenerate/deform_tiny_reflex_chamfer_*.wpoly).  A convex
+** or straight vertex at the end of a tiny edge stays: there the edge
+** collapses or grows by the motion of its ends (an edge swap, or none),
+** again as in the engine.
 ** Input vertices of two rings (holes nearly touching) keep the old rule:
 ** taking them as met put a node where CGAL and naive do not
 ** (tests/data/fuzz/mismatch_arrangement_motorcycle_holes_touching.wpoly). */
@@ -231,6 +232,16 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     /* approaching from the inside (the wavefront is on the inner side of
     ** each of its pieces) and on the line by t1 */
     if (g0 < -eps_c || !(rate < -WK_APPROACH_REL * speed) || g1 > 0) return WK_OK;
+    /* An input vertex strictly behind the input line of the piece's edge,
+    ** moving away from it, is within the contact distance only because the
+    ** input puts it there: the engine's rule (its split test asks the same
+    ** function), so that a reflex corner's chamfer shorter than eps_d grows
+    ** into a face as in the engine and CGAL, instead of its vertex meeting
+    ** the piece across it at t = 0
+    ** (tests/data/degenerate/deform_tiny_reflex_chamfer_*.wpoly). */
+    if (g0 <= eps_c && p < D->P->n && V->t0 == 0 &&
+        wk_input_vertex_never_reaches_line(D->R, D->P, p, V->v, L, A->eout))
+        return WK_OK;
     /* The vertex must meet the piece from the unswept side: one of its own
     ** pieces leaves it into that side or along the line (n . direction >
     ** -WK_PARALLEL_SIN, on the input directions; along the line: the two
