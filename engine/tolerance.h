@@ -389,6 +389,20 @@
 #define WK_MONO_LEVEL_SLACK 1e3
 #define WK_MONO_LEVEL_REL 1e-12
 
+/* ------------------------------------------ a large group's point grid */
+
+/* wavefront_group.c looks up a large group's nodes and vertices in a grid
+** (point_grid.h) instead of scanning them, and must find every one its
+** tests (a distance to a point or a band around a piece, in doubles) could
+** accept.  So each query box is widened past those tests' reach by
+** WK_GRID_WIDEN times the test's radius plus WK_GRID_ULPS ulps of the
+** box's coordinates (the rounding of a difference of coordinates and of a
+** dot product with a unit vector: a few ulps).  Not a tolerance of the
+** skeleton: a wider box only lists a few more candidates, which the tests
+** then reject, so the plan is the scan's, bit for bit. */
+#define WK_GRID_WIDEN 1e-3
+#define WK_GRID_ULPS 16.0
+
 /* ----------------------------------------------------------- offsets */
 
 /* wk_offset (offset.c) pairs the crossings of an offset line with a face's

@@ -747,6 +747,9 @@ done:
     WK_FREE_ARRAY(R, W.dead, W.cap_dead);
     WK_FREE_ARRAY(R, W.shield, W.cap_shield);
     WK_FREE_ARRAY(R, W.deferred, W.cap_deferred);
+    wk_point_grid_free(R, &W.cg);
+    wk_point_grid_free(R, &W.vg);
+    WK_FREE_ARRAY(R, W.by_from, W.cap_by_from);
     if (st != WK_OK) {
         wk_skeleton_free(R, W.S);
         return st;

@@ -54,10 +54,87 @@
 ** features resolved at t = 0
 ** (the fuzz findings integer_needles_a and _b,
 ** tests/data/degenerate/needle_tip_nearest_node.wpoly). */
-static uint32_t find_cluster_within(const wk_wavefront *W, wk_point p, double r) {
+/* A group of at least WF_GRID_MIN seeds and forced vertices looks its
+** nodes up in a grid (point_grid.h, W->cg) instead of scanning them: a
+** group of k events at k places (the comb's teeth, all at once) cost
+** O(k^2) in the scans of plan_arrivals, plan_pinches and
+** plan_force_touching.  The lookups return the candidates increasing, and
+** every node a scan's test could accept is a candidate (the box is widened
+** by tolerance.h's WK_GRID_*), so the loops below see the scan's
+** sequence minus nodes that fail the test: the same plan.  Below that size
+** the scans are cheaper than the grid. */
+enum { WF_GRID_MIN = 64 };
+
+/* The grid for this plan's nodes: cells about the spacing of its points
+** (the seeds' event points and the forced vertices). */
+static wk_status start_node_grid(wk_wavefront *W, double t) {
+    W->cg_on = W->vg_on = false;
+    uint32_t n = W->n_seeds + W->n_forced;
+    if (n < WF_GRID_MIN) return WK_OK;
+    wk_point lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < n; i++) {
+        wk_point p = i < W->n_seeds ? W->v[W->seeds[i]].ev_p
+                                    : wk_wf_pos(&W->v[W->forced[i - W->n_seeds]], t);
+        lo.x = fmin(lo.x, p.x);
+        lo.y = fmin(lo.y, p.y);
+        hi.x = fmax(hi.x, p.x);
+        hi.y = fmax(hi.y, p.y);
+    }
+    double wx = hi.x - lo.x, wy = hi.y - lo.y;
+    double h = fmax(fmax((wx + wy) / n, sqrt(wx * wy / n)), 4 * W->eps_g);
+    if (!isfinite(h) || !isfinite(lo.x) || !isfinite(lo.y)) return WK_OK;
+    if (wk_point_grid_reset(W->R, &W->cg, lo.x, lo.y, h) != WK_OK) return W->R->err.code;
+    W->cg_on = true;
+    return WK_OK;
+}
+
+/* Box [lo, hi] widened by r and the grid's margins (tolerance.h). */
+static void widen(wk_point *lo, wk_point *hi, double r) {
+    double m = r * (1 + WK_GRID_WIDEN) +
+               WK_GRID_ULPS * DBL_EPSILON * (fabs(lo->x) + fabs(lo->y) + fabs(hi->x) + fabs(hi->y));
+    lo->x -= m;
+    lo->y -= m;
+    hi->x += m;
+    hi->y += m;
+}
+
+/* The nodes that may lie within r of box [lo, hi]: true with them in
+** W->cg.out[0 .. n_out), increasing; false: every node may (scan). */
+static bool near_nodes(wk_wavefront *W, wk_point lo, wk_point hi, double r) {
+    if (!W->cg_on) return false;
+    widen(&lo, &hi, r);
+    return wk_point_grid_query(&W->cg, lo, hi, (uint64_t)W->n_cl + 16);
+}
+
+/* The box of the points q with s in [-e, len + e] and |off| <= e in the
+** frame of line L from pa (plan_pinches' and local_walk_suffices' band). */
+static void band_box(wk_point pa, const wk_offset_line *L, double len, double e, wk_point *lo,
+                     wk_point *hi) {
+    double x1 = pa.x - e * L->ux, x2 = pa.x + (len + e) * L->ux;
+    double y1 = pa.y - e * L->uy, y2 = pa.y + (len + e) * L->uy;
+    lo->x = fmin(x1, x2) - e * fabs(L->nx);
+    hi->x = fmax(x1, x2) + e * fabs(L->nx);
+    lo->y = fmin(y1, y2) - e * fabs(L->ny);
+    hi->y = fmax(y1, y2) + e * fabs(L->ny);
+}
+
+/* The nearest node within r of p, WK_NONE if there is none.  Nearest, not
+** the first found: a fast vertex's radius spans several nodes of the group
+** (a vertex of speed 2e6 covers 18 units in eps_t), and the node it really
+** reaches is the one closest to where it is.  Taking the first (in cluster
+** order) sent the tip of a needle 1e6 long to the node of a split 5 units
+** ahead of it, not to the collapse of its own triangle 2.5 units ahead: the
+** plan failed at eps_d, and 4 eps_d gave a valid skeleton with unit-sized
+** features resolved at t = 0
+** (the fuzz findings integer_needles_a and _b,
+** tests/data/degenerate/needle_tip_nearest_node.wpoly).  Ties: the last. */
+static uint32_t find_cluster_within(wk_wavefront *W, wk_point p, double r) {
     double best = r * r;
     uint32_t k_best = WK_NONE;
-    for (uint32_t k = 0; k < W->n_cl; k++) {
+    bool listed = near_nodes(W, p, p, r);
+    uint32_t n = listed ? W->cg.n_out : W->n_cl;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t k = listed ? W->cg.out[i] : i;
         double d2 = wf_dist2(W->cl[k].p, p);
         if (d2 <= best) {
             best = d2;
@@ -67,10 +144,15 @@ static uint32_t find_cluster_within(const wk_wavefront *W, wk_point p, double r)
     return k_best;
 }
 
-static uint32_t find_cluster(const wk_wavefront *W, wk_point p) {
+/* The first node within eps_g of p, WK_NONE if there is none. */
+static uint32_t find_cluster(wk_wavefront *W, wk_point p) {
     double e2 = W->eps_g * W->eps_g;
-    for (uint32_t k = 0; k < W->n_cl; k++)
+    bool listed = near_nodes(W, p, p, W->eps_g);
+    uint32_t n = listed ? W->cg.n_out : W->n_cl;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t k = listed ? W->cg.out[i] : i;
         if (wf_dist2(W->cl[k].p, p) <= e2) return k;
+    }
     return WK_NONE;
 }
 
@@ -80,6 +162,7 @@ static wk_status add_cluster(wk_wavefront *W, wk_point p, uint32_t *k) {
     if (WK_GROW(W->R, W->cl, W->cap_cl, W->n_cl + 1) != WK_OK) return W->R->err.code;
     W->cl[W->n_cl] = (wk_wf_cluster){p, WK_NONE, 0, 0, 0, 0, 0, 0};
     *k = W->n_cl++;
+    if (W->cg_on && wk_point_grid_add(W->R, &W->cg, *k, p) != WK_OK) return W->R->err.code;
     return WK_OK;
 }
 
@@ -260,6 +343,7 @@ static void sort_by_endpoints(const wk_wavefront *W, uint32_t *a, uint32_t n) {
 ** touched cycles otherwise). */
 static wk_status plan_nodes(wk_wavefront *W, double t) {
     wk_run *R = W->R;
+    if (start_node_grid(W, t) != WK_OK) return R->err.code;
     for (uint32_t i = 0; i < W->n_seeds; i++) {
         uint32_t k;
         if (add_cluster(W, W->v[W->seeds[i]].ev_p, &k) != WK_OK) return R->err.code;
@@ -499,7 +583,7 @@ static void plan_arrivals(wk_wavefront *W, double t) {
 ** Near-degenerate inputs break that (a regular 24-gon with one coordinate
 ** moved by 1e-12: all 24 vertices meet within eps_d of the centre, but the
 ** events come one by one, eps_t apart). */
-static bool local_walk_suffices(const wk_wavefront *W, double t) {
+static bool local_walk_suffices(wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < W->n_comp; i++) {
         const wk_wf_vertex *c = &W->v[W->comp[i]];
         const wk_wf_vertex *o = &W->v[c->prev];
@@ -508,7 +592,12 @@ static bool local_walk_suffices(const wk_wavefront *W, double t) {
         wk_point a = wk_wf_pos(o, t), b = wk_wf_pos(c, t);
         const wk_offset_line *L = &W->L[o->eout];
         double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
-        for (uint32_t k = 0; k < W->n_cl; k++) {
+        wk_point lo, hi;
+        band_box(a, L, len, W->eps_g, &lo, &hi);
+        bool listed = near_nodes(W, lo, hi, W->eps_g);
+        uint32_t n = listed ? W->cg.n_out : W->n_cl;
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t k = listed ? W->cg.out[i] : i;
             wk_point q = W->cl[k].p;
             double s = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
@@ -553,7 +642,12 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
         wk_point pb = B->at != WK_NONE ? W->cl[B->at].p : wk_wf_pos(B, t);
         const wk_offset_line *L = &W->L[A->eout];
         double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
-        for (uint32_t k = 0; k < W->n_cl; k++) {
+        wk_point lo, hi;
+        band_box(pa, L, len, W->eps_g, &lo, &hi);
+        bool listed = near_nodes(W, lo, hi, W->eps_g);
+        uint32_t n = listed ? W->cg.n_out : W->n_cl;
+        for (uint32_t ki = 0; ki < n; ki++) {
+            uint32_t k = listed ? W->cg.out[ki] : ki;
             if (k == A->at || k == B->at) continue;
             wk_point q = W->cl[k].p;
             double s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
@@ -688,6 +782,81 @@ static wk_status plan_cancel(wk_wavefront *W) {
     return WK_OK;
 }
 
+static int cmp_by_from(const void *x, const void *y, const wk_wavefront *W) {
+    uint32_t a = *(const uint32_t *)x, b = *(const uint32_t *)y;
+    uint32_t fa = W->sub[a].from, fb = W->sub[b].from;
+    if (fa != fb) return fa < fb ? -1 : 1;
+    return a < b ? -1 : a > b;
+}
+
+/* Heap sort of sub-piece ids by (start, id) (no qsort_r in C11). */
+static void sort_by_from(const wk_wavefront *W, uint32_t *a, uint32_t n) {
+    for (uint32_t k = n / 2; k-- > 0;)
+        for (uint32_t i = k;;) {
+            uint32_t c = 2 * i + 1;
+            if (c >= n) break;
+            if (c + 1 < n && cmp_by_from(&a[c], &a[c + 1], W) < 0) c++;
+            if (cmp_by_from(&a[i], &a[c], W) >= 0) break;
+            uint32_t tmp = a[i];
+            a[i] = a[c];
+            a[c] = tmp;
+            i = c;
+        }
+    for (uint32_t m = n; m-- > 1;) {
+        uint32_t tmp = a[0];
+        a[0] = a[m];
+        a[m] = tmp;
+        for (uint32_t i = 0;;) {
+            uint32_t c = 2 * i + 1;
+            if (c >= m) break;
+            if (c + 1 < m && cmp_by_from(&a[c], &a[c + 1], W) < 0) c++;
+            if (cmp_by_from(&a[i], &a[c], W) >= 0) break;
+            tmp = a[i];
+            a[i] = a[c];
+            a[c] = tmp;
+            i = c;
+        }
+    }
+}
+
+/* Some live sub-piece runs from x's end back to x's start.  In a large
+** group (WF_GRID_MIN sub-pieces) the live ones are looked up by start in
+** W->by_from (built by the caller), else scanned. */
+static bool has_reverse(const wk_wavefront *W, const wk_wf_sub *x, uint32_t n_by) {
+    if (!n_by) {
+        for (uint32_t j = 0; j < W->n_sub; j++) {
+            const wk_wf_sub *y = &W->sub[j];
+            if (!y->dead && y->from == x->to && y->to == x->from) return true;
+        }
+        return false;
+    }
+    uint32_t lo = 0, hi = n_by;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (W->sub[W->by_from[mid]].from < x->to) lo = mid + 1;
+        else hi = mid;
+    }
+    for (; lo < n_by && W->sub[W->by_from[lo]].from == x->to; lo++)
+        if (W->sub[W->by_from[lo]].to == x->from) return true;
+    return false;
+}
+
+/* The untouched vertices of the group by place (W->vg, per plan): id j is
+** W->comp[j]. */
+static wk_status start_vertex_grid(wk_wavefront *W, double t) {
+    if (wk_point_grid_reset(W->R, &W->vg, W->cg.x0, W->cg.y0, W->cg.h) != WK_OK)
+        return W->R->err.code;
+    for (uint32_t j = 0; j < W->n_comp; j++) {
+        const wk_wf_vertex *u = &W->v[W->comp[j]];
+        if (u->at != WK_NONE) continue;
+        wk_point q = wk_wf_pos(u, t);
+        if (!isfinite(q.x) || !isfinite(q.y)) return WK_OK; /* scan instead */
+        if (wk_point_grid_add(W->R, &W->vg, j, q) != WK_OK) return W->R->err.code;
+    }
+    W->vg_on = true;
+    return WK_OK;
+}
+
 /* Step 5a: vertices that meet the group without being at a node yet.  An
 ** untouched vertex whose pieces both lead to the same node closes a
 ** triangle of no area with it; an untouched vertex lying on a sub-piece
@@ -697,17 +866,20 @@ static wk_status plan_cancel(wk_wavefront *W) {
 ** (*again). */
 static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
+    uint32_t n_by = 0;
+    if (W->n_sub >= WF_GRID_MIN) {
+        if (WK_GROW(R, W->by_from, W->cap_by_from, W->n_sub) != WK_OK) return R->err.code;
+        for (uint32_t j = 0; j < W->n_sub; j++)
+            if (!W->sub[j].dead) W->by_from[n_by++] = j;
+        sort_by_from(W, W->by_from, n_by);
+    }
     for (uint32_t i = 0; i < W->n_sub; i++) {
         const wk_wf_sub *x = &W->sub[i];
         if (x->dead || !IS_NODE(x->from) || IS_NODE(x->to)) continue;
-        for (uint32_t j = 0; j < W->n_sub; j++) {
-            const wk_wf_sub *y = &W->sub[j];
-            if (y->dead || y->from != x->to || y->to != x->from) continue;
-            if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, x->to) != WK_OK)
-                return R->err.code;
-            *again = true;
-            break;
-        }
+        if (!has_reverse(W, x, n_by)) continue;
+        if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, x->to) != WK_OK)
+            return R->err.code;
+        *again = true;
     }
     if (*again) return WK_OK;
     for (uint32_t i = 0; i < W->n_sub; i++) {
@@ -716,7 +888,18 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
         wk_point a = W->cl[NODE_OF(x->from)].p, b = W->cl[NODE_OF(x->to)].p;
         const wk_offset_line *L = &W->L[x->edge];
         double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
-        for (uint32_t j = 0; j < W->n_comp; j++) {
+        if (W->cg_on && !W->vg_on && W->n_comp >= WF_GRID_MIN && start_vertex_grid(W, t) != WK_OK)
+            return R->err.code;
+        bool listed = false;
+        if (W->vg_on) {
+            wk_point lo, hi;
+            band_box(a, L, len, W->eps_g, &lo, &hi);
+            widen(&lo, &hi, W->eps_g);
+            listed = wk_point_grid_query(&W->vg, lo, hi, (uint64_t)W->n_comp + 16);
+        }
+        uint32_t n = listed ? W->vg.n_out : W->n_comp;
+        for (uint32_t ji = 0; ji < n; ji++) {
+            uint32_t j = listed ? W->vg.out[ji] : ji;
             const wk_wf_vertex *u = &W->v[W->comp[j]];
             if (u->at != WK_NONE) continue;
             wk_point q = wk_wf_pos(u, t);
@@ -1044,13 +1227,40 @@ static wk_status commit(wk_wavefront *W, double t) {
         uint32_t sk = sk_node(W, W->v[u].at, t);
         if (sk == WK_NONE || wf_terminate(W, u, sk) != WK_OK) return R->err.code;
     }
-    /* cancelled pairs leave arcs: face of x->y on its right */
+    /* cancelled pairs leave arcs: face of x->y on its right.  a's partner
+    ** is the first cancelled sub-piece from a's end to its start; in a large
+    ** group they are looked up by start (W->by_from, increasing ids within a
+    ** start, so the same first one), else scanned. */
+    uint32_t n_by = 0;
+    for (uint32_t i = 0; i < W->n_sub; i++) n_by += W->sub[i].dead == 2;
+    if (n_by >= WF_GRID_MIN) {
+        if (WK_GROW(R, W->by_from, W->cap_by_from, n_by) != WK_OK) return R->err.code;
+        n_by = 0;
+        for (uint32_t i = 0; i < W->n_sub; i++)
+            if (W->sub[i].dead == 2) W->by_from[n_by++] = i;
+        sort_by_from(W, W->by_from, n_by);
+    } else {
+        n_by = 0;
+    }
     for (uint32_t i = 0; i < W->n_sub; i++) {
         wk_wf_sub *a = &W->sub[i];
         if (a->dead != 2) continue;
         a->dead = 1;
-        for (uint32_t j = 0; j < W->n_sub; j++) {
+        uint32_t j0 = 0, j1 = W->n_sub;
+        if (n_by) {
+            uint32_t lo = 0, hi = n_by;
+            while (lo < hi) {
+                uint32_t mid = lo + (hi - lo) / 2;
+                if (W->sub[W->by_from[mid]].from < a->to) lo = mid + 1;
+                else hi = mid;
+            }
+            j0 = lo;
+            j1 = n_by;
+        }
+        for (uint32_t jj = j0; jj < j1; jj++) {
+            uint32_t j = n_by ? W->by_from[jj] : jj;
             wk_wf_sub *b = &W->sub[j];
+            if (n_by && b->from != a->to) break;
             if (b->dead == 2 && b->from == a->to && b->to == a->from) {
                 b->dead = 1;
                 uint32_t x = sk_node(W, NODE_OF(a->from), t), y = sk_node(W, NODE_OF(a->to), t);

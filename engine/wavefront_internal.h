@@ -14,6 +14,7 @@
 #ifndef WK_WAVEFRONT_INTERNAL_H
 #define WK_WAVEFRONT_INTERNAL_H
 #include "wavefront.h"
+#include "point_grid.h"
 
 #define TWO_PI 6.283185307179586476925286766559
 
@@ -104,6 +105,11 @@ struct wk_wavefront {
     uint8_t *cycflag; uint32_t n_cyc, cap_cycflag;
     uint32_t *run, *run_node; uint32_t n_run, cap_run, cap_run_node; /* collinear runs */
     wk_wf_shield *shield; uint32_t n_shield, cap_shield; /* this group's shielded piece ends */
+    /* a large group's nodes and untouched vertices by place
+    ** (wavefront_group.c, WF_GRID_MIN); off: the plan scans */
+    wk_point_grid cg; bool cg_on;
+    wk_point_grid vg; bool vg_on;
+    uint32_t *by_from; uint32_t cap_by_from; /* plan_force_touching's sub-pieces by start */
     bool input_sides;  /* sub-tolerance gaps between input vertices are
                           resolved on the input's side (wf_input_cut_side,
                           plan_shields): at the nominal tolerance and

@@ -124,6 +124,8 @@ typedef struct mc_state {
     mc_piece_grid pg;    /* ray shots (piece_grid.h) */
     mc_trace_grid tg;    /* traces by place, built at the first list_crossings */
     double tg_pad;       /* each part is indexed this much longer at both ends */
+    mc_trace_grid fg;    /* forward_piece's candidates in a large group, by place */
+    bool fg_ready;       /* fg lists the current group's candidate pieces */
 } mc_state;
 
 /* ------------------------------------------------------------ geometry */
@@ -608,31 +610,96 @@ static wk_status release_guards(mc_state *A, const wk_wavefront *W, uint32_t sj,
     return WK_OK;
 }
 
-/* Among the pieces next to the last group's fresh vertices, the one that
-** crosses trace si within WK_RELOCATE_SLACK * eps_d of lam at time t and
-** moves on along it (its crossing moves away from o): where the wavefront
-** sweeps the trace on from lam.  WK_NONE if there is none. */
-static uint32_t forward_piece(const wk_wavefront *W, const mc_seg *S, double lam, double t) {
-    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W), best = INFINITY, mu;
-    uint32_t pick = WK_NONE;
+/* forward_piece's candidates are the pieces next to the last group's
+** fresh vertices: candidate 2 i + j is two[j] of fresh[i] (below).  A
+** group of thousands of simultaneous events (the comb: every tooth at
+** once) made the scan over them quadratic, one scan per trace ended in the
+** group; from MC_FORWARD_INDEX_MIN fresh vertices on, the candidates are
+** listed once per group in a grid (trace_grid.h) by their segment at the
+** group's time, lengthened by WK_RAY_PIECE_SLACK at both ends, within
+** 4 slack: a piece whose crossing with the ray lies within slack of the
+** queried point (the test below) comes within that of it.  The query
+** returns the ids increasing, so the pick (the first of the best) is the
+** scan's. */
+enum { MC_FORWARD_INDEX_MIN = 64 };
+
+static void forward_pair(const wk_wavefront *W, const uint32_t *fresh, uint32_t i,
+                         uint32_t two[2]) {
+    two[0] = fresh[i];
+    two[1] = wk_wf_prev(W, fresh[i]);
+}
+
+static wk_status index_forward(mc_state *A, const wk_wavefront *W, double t, double slack) {
     const uint32_t *fresh, *ended;
     uint32_t n_fresh, n_ended;
     wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
-    for (uint32_t i = 0; i < n_fresh; i++) {
-        uint32_t g = fresh[i];
-        if (!wk_wf_alive(W, g)) continue;
-        uint32_t two[2] = {g, wk_wf_prev(W, g)};
-        for (int j = 0; j < 2; j++) {
-            uint32_t a = two[j];
-            double at = hit_piece(W, S, a, t, lam - slack, &mu);
-            if (!(fabs(at - lam) <= slack) || !(fabs(at - lam) < best)) continue;
-            const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
-            if (!(lambda_on_line(S, L, t + 1) > lambda_on_line(S, L, t))) continue;
-            best = fabs(at - lam);
-            pick = a;
+    wk_point lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass) {
+            if (!(lo.x <= hi.x && lo.y <= hi.y)) lo = hi = (wk_point){0, 0};
+            if (mc_tg_build(A->R, &A->fg, lo, hi, 2 * n_fresh, 4.0 * slack) != WK_OK)
+                return WK_ENOMEM;
+            A->fg_ready = true;
+        }
+        for (uint32_t i = 0; i < n_fresh; i++) {
+            if (!wk_wf_alive(W, fresh[i])) continue;
+            uint32_t two[2];
+            forward_pair(W, fresh, i, two);
+            for (uint32_t j = 0; j < 2; j++) {
+                wk_point pa = wk_wf_position(W, two[j], t);
+                wk_point pb = wk_wf_position(W, wk_wf_next(W, two[j]), t);
+                double dx = 2 * WK_RAY_PIECE_SLACK * (pb.x - pa.x);
+                double dy = 2 * WK_RAY_PIECE_SLACK * (pb.y - pa.y);
+                wk_point a = {pa.x - dx, pa.y - dy}, b = {pb.x + dx, pb.y + dy};
+                if (pass) {
+                    if (mc_tg_add(A->R, &A->fg, 2 * i + j, a, b) != WK_OK) return WK_ENOMEM;
+                    continue;
+                }
+                lo.x = fmin(lo.x, fmin(a.x, b.x));
+                lo.y = fmin(lo.y, fmin(a.y, b.y));
+                hi.x = fmax(hi.x, fmax(a.x, b.x));
+                hi.y = fmax(hi.y, fmax(a.y, b.y));
+            }
         }
     }
-    return pick;
+    return WK_OK;
+}
+
+/* Among the pieces next to the last group's fresh vertices, the one that
+** crosses trace si within WK_RELOCATE_SLACK * eps_d of lam at time t and
+** moves on along it (its crossing moves away from o): where the wavefront
+** sweeps the trace on from lam.  *pick WK_NONE if there is none.  t is
+** the time of the last group (the index is per group). */
+static wk_status forward_piece(mc_state *A, const wk_wavefront *W, const mc_seg *S, double lam,
+                               double t, uint32_t *pick) {
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W), best = INFINITY, mu;
+    const uint32_t *fresh, *ended;
+    uint32_t n_fresh, n_ended;
+    wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    *pick = WK_NONE;
+    const uint32_t *ids = NULL;
+    uint32_t n_ids = 2 * n_fresh;
+    if (n_fresh >= MC_FORWARD_INDEX_MIN) {
+        if (!A->fg_ready && index_forward(A, W, t, slack) != WK_OK) return A->R->err.code;
+        wk_point p = {S->o.x + lam * S->u.x, S->o.y + lam * S->u.y};
+        if (mc_tg_query(A->R, &A->fg, p, p) != WK_OK) return A->R->err.code;
+        ids = A->fg.out;
+        n_ids = A->fg.n_out;
+    }
+    for (uint32_t k = 0; k < n_ids; k++) {
+        uint32_t id = ids ? ids[k] : k, i = id / 2, j = id % 2;
+        if (!wk_wf_alive(W, fresh[i])) continue;
+        uint32_t two[2];
+        forward_pair(W, fresh, i, two);
+        uint32_t a = two[j];
+        double at = hit_piece(W, S, a, t, lam - slack, &mu);
+        if (!(fabs(at - lam) <= slack) || !(fabs(at - lam) < best)) continue;
+        const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+        if (!(lambda_on_line(S, L, t + 1) > lambda_on_line(S, L, t))) continue;
+        best = fabs(at - lam);
+        *pick = a;
+    }
+    return WK_OK;
 }
 
 /* Some trace waits with F beyond at a resting Steiner vertex of si past
@@ -681,7 +748,9 @@ static wk_status remove_segment(mc_state *A, wk_wavefront *W, uint32_t si, doubl
     double lv = lambda_v(W, S, t), lf = lambda_f(W, S, t);
     bool met = isfinite(lf) && lf <= lv + WK_RELOCATE_SLACK * wk_wf_eps_d(W);
     if (!met && guards_ahead(A, W, si, lv)) {
-        uint32_t a = forward_piece(W, S, lv, t);
+        uint32_t a;
+        if (forward_piece(A, W, S, lv, t, &a) != WK_OK) return A->R->err.code;
+        S = &A->s[si];
         if (a != WK_NONE && (S->pa != WK_NONE || S->beyond)) {
             wk_count(A->R, WK_VC_ghost_traces, 1);
             A->seg_of[S->v] = WK_NONE;
@@ -971,6 +1040,8 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
     const uint32_t *fresh, *ended;
     uint32_t n_fresh, n_ended;
     wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    if (A->fg_ready) mc_tg_clear(R, &A->fg);
+    A->fg_ready = false;
     A->stamp++;
     A->n_todo = 0;
     for (uint32_t i = 0; i < A->n_held; i++) {
@@ -1011,7 +1082,8 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
         if (!S->ghost || S->ba == WK_NONE) continue;
         if (wk_wf_alive(W, S->ba) && wk_wf_next(W, S->ba) == S->bb) continue;
         double lo = lambda_lo(W, S, t);
-        uint32_t a = isfinite(lo) ? forward_piece(W, S, lo, t) : WK_NONE;
+        uint32_t a = WK_NONE;
+        if (isfinite(lo) && forward_piece(A, W, S, lo, t, &a) != WK_OK) return R->err.code;
         if (a == WK_NONE) {
             if (kill_ghost(A, W, si, t) != WK_OK) return R->err.code;
             continue;
@@ -1411,6 +1483,7 @@ static wk_status motorcycle_run(wk_run *R, const wk_polygon *P, wk_skeleton **ou
     wk_event_queue_init(&A.Q);
     mc_pg_init(&A.pg);
     mc_tg_init(&A.tg);
+    mc_tg_init(&A.fg);
     wk_status st = wk_wavefront_run(R, P, &motorcycle_finder, &A, out);
     mc_clear(&A);
     /* The trace finder's own check: the skeleton must pass the validator.
@@ -1432,6 +1505,7 @@ static void mc_clear(mc_state *Ap) {
     wk_event_queue_clear(R, &A.Q);
     mc_pg_clear(R, &A.pg);
     mc_tg_clear(R, &A.tg);
+    mc_tg_clear(R, &A.fg);
     for (uint32_t si = 0; si < A.n_s; si++)
         if (A.s[si].capx) WK_FREE_ARRAY(R, A.s[si].x, A.s[si].capx);
     WK_FREE_ARRAY(R, A.s, A.cap_s);
