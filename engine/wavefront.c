@@ -485,7 +485,7 @@ static wk_status refresh(wk_wavefront *W) {
         ** the finder does not follow (one found by the split test's scan
         ** rather than by the finder's own structure): when this group ended
         ** that piece, the candidate is recomputed.  A stale one was resolved
-        ** as a split of a piece that no longer existed (arrangement, a hole
+        ** as a split of a piece that no longer existed (a local-refresh finder, a hole
         ** whose vertex targeted a piece of another hole that a third hole's
         ** split had just ended: tests/test_near_touch.py --sweep 1000, case
         ** 696).  O(vertices) per group with holes only, as the walk below. */

@@ -493,7 +493,7 @@ static bool split_misses_piece(const wk_wavefront *W, uint32_t x, double t) {
 ** found once and kept in its `at` (ECHO_BIT for an echo; plan_arrivals sets
 ** every `at` afresh, and they are reset here), the real seeds per node
 ** counted in the node's `count` (plan_slots resets it).  No scratch array:
-** a group of a comb's 1500 teeth is 1% of naive's peak memory. */
+** a group of a comb's 1500 teeth is 1% of the reference finder's peak memory. */
 #define ECHO_BIT 0x80000000u
 static wk_status plan_slow_stretches(wk_wavefront *W, double t) {
     if (!W->input_sides || W->n_forced) return WK_OK;
