@@ -643,6 +643,15 @@ static wk_status plan_slow_stretches(df_state *D, double te, double eps_c) {
     return WK_OK;
 }
 
+/* Vertex x is within the contact distance of X at te, or within what it
+** covers in the group's span after te (see "neighbours within reach"). */
+static bool within_reach(const df_state *D, uint32_t x, wk_point X, double te, double eps_c,
+                         double span) {
+    const df_vertex *V = &D->v[x];
+    double r = eps_c + (fabs(V->v.x) + fabs(V->v.y)) * span;
+    return dist2(df_pos(V, te), X) <= r * r;
+}
+
 static wk_status resolve(df_state *D, double te) {
     struct df_resolve_scratch *S = D->rs;
     wk_run *R = D->R;
@@ -676,14 +685,24 @@ static wk_status resolve(df_state *D, double te) {
                             &(wk_event){te, X.x + D->o.x, X.y + D->o.y, E->a, E->b, WK_NONE});
         }
     }
-    /* ends of cut pieces at the point, and neighbours within reach */
+    /* ends of cut pieces at the point, and neighbours within reach: the
+    ** contact distance plus what the vertex covers in the group's span
+    ** (te .. its latest event), as the engine's arrivals (plan_arrivals):
+    ** a fast vertex that near arrives in the same instant.  The tip of a
+    ** spike 4e9 long (speed 2.1e8) was 133 units (eps_d 4) from the point
+    ** where its base closed, which it reaches 6.3e-7 later, within the
+    ** group's span of 6.7e-7; left out, the spike's two sides left the point
+    ** side by side (WK_EALGO, the reference: stress s1-c00203-regular_4e9,
+    ** tests/data/degenerate/deform_spike_tip_arrives.wpoly). */
+    double span = 0;
+    for (uint32_t i = 0; i < D->n_ev; i++)
+        if (D->ev[i].t - te > span) span = D->ev[i].t - te;
     for (int round = 0; round < 2; round++) {
         for (uint32_t i = 0; i < S->n_split; i += 2) {
             uint32_t a = S->split[i], k = find(S, S->split[i + 1]);
             uint32_t ends[2] = {a, D->v[a].next};
             for (int j = 0; j < 2; j++)
-                if (D->member[ends[j]] == WK_NONE &&
-                    dist2(df_pos(&D->v[ends[j]], te), S->cx[k]) <= eps_c * eps_c &&
+                if (D->member[ends[j]] == WK_NONE && within_reach(D, ends[j], S->cx[k], te, eps_c, span) &&
                     add_member(D, ends[j], k) != WK_OK)
                     return R->err.code;
         }
@@ -691,8 +710,7 @@ static wk_status resolve(df_state *D, double te) {
             uint32_t v = S->mlist[i], k = find(S, D->member[v]);
             uint32_t nb[2] = {D->v[v].prev, D->v[v].next};
             for (int j = 0; j < 2; j++)
-                if (D->member[nb[j]] == WK_NONE &&
-                    dist2(df_pos(&D->v[nb[j]], te), S->cx[k]) <= eps_c * eps_c &&
+                if (D->member[nb[j]] == WK_NONE && within_reach(D, nb[j], S->cx[k], te, eps_c, span) &&
                     add_member(D, nb[j], k) != WK_OK)
                     return R->err.code;
         }
