@@ -106,23 +106,29 @@ static bool near_root(const df_state *D, double t3, double tr) {
     return fabs(t3 - tr) <= D->dt_near;
 }
 
-/* Where and when the offset lines of edges e1, e2, e3 meet, asked in
-** one order (by edge id): an edge swap and a penetration that meet at
-** the same three lines then get the same time and point to the bit.
-** Asked in each event's own order, Cramer's rule rounds differently, and
-** where two of the lines are nearly parallel the times differ by far more
-** than eps_t: a nearly straight vertex (edges 0, 1) reaching edge 4 where
-** the piece of edge 0 collapses got 3.4e-12 (1000 eps_t) before that
-** collapse, resolved alone as a penetration just beyond the piece's end
-** (two pieces leaving the point side by side, the reference: stress
-** s1-c02552-mixed, tests/data/degenerate/deform_three_lines_one_order.wpoly). */
+/* Where and when the offset lines of edges e1, e2, e3 meet: from the
+** input points in long double (wk_three_edges_meet, as the engine's edge
+** events), asked in one order (by edge id), so that an edge swap and a
+** penetration that meet at the same three lines get the same time and
+** point to the bit.  Asked on the double lines in each event's own order,
+** Cramer's rule rounded differently, and where two of the lines are
+** nearly parallel the times differed by far more than eps_t: a nearly
+** straight vertex (edges 0, 1) reaching edge 4 where the piece of edge 0
+** collapses got 3.4e-12 (1000 eps_t) before that collapse, resolved alone
+** as a penetration just beyond the piece's end (two pieces leaving the
+** point side by side, the reference: stress s1-c02552-mixed,
+** tests/data/degenerate/deform_three_lines_one_order.wpoly).  The double
+** lines in one order fixed that case but, their rounding moved, sent
+** others to the reference (s1-c01517-mixed, s1-c02434-regular_4e9) or made
+** them differ from naive (s1-c01072-nearly_straight); the long double
+** lines do neither (stress --cases 3000). */
 static bool df_three_lines_meet(const df_state *D, uint32_t e1, uint32_t e2, uint32_t e3,
                                 wk_point *m, double *t) {
     uint32_t x;
     if (e1 > e2) x = e1, e1 = e2, e2 = x;
     if (e2 > e3) x = e2, e2 = e3, e3 = x;
     if (e1 > e2) x = e1, e1 = e2, e2 = x;
-    return wk_three_lines_meet(&D->L[e1], &D->L[e2], &D->L[e3], m, t);
+    return wk_three_edges_meet(D->P, e1, e2, e3, D->o, m, t);
 }
 
 /* Edge swap of the piece a -> next(a) within [t, t1]. */

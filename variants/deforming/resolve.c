@@ -570,6 +570,16 @@ static wk_status shield_slow_stretch(df_state *D, uint32_t k, wk_point q, uint32
     wk_point vy, px = df_pos(X, te);
     /* farther than this, x joins no point near q: the list stays short */
     if (!X->alive || dist2(px, q) > 4 * eps_c * eps_c) return WK_OK;
+    /* The vertex beyond x within the contact distance too: a run of
+    ** vertices gathers at the point (a regular polygon vanishing at its
+    ** centre), each with its own event there, where the engine's node has
+    ** more than one seed and keeps the tolerance picture.  Deforming's
+    ** group holds only the events found first: shielded, the 64-gon
+    ** perturbed by 1e-12 (tests/data/degenerate/reg64_eps.wpoly) kept
+    ** vertices 1 and 4 alive, 4e-13 from the point, once the three lines
+    ** came from the input points (predict.c) and went to the reference. */
+    uint32_t beyond = x_after ? X->next : X->prev;
+    if (dist2(df_pos(&D->v[beyond], te), q) <= eps_c * eps_c) return WK_OK;
     if (wk_vertex_velocity(&D->L[ein], &D->L[eout], &vy) != WK_VEL_REGULAR) return WK_OK;
     if (!wk_stretch_collapses_later(&D->L[e], q, vy, px, X->v, x_after, D->eps_t)) return WK_OK;
     if (WK_GROW(D->R, S->shield, S->cap_shield, S->n_sh + 2) != WK_OK) return D->R->err.code;
