@@ -269,6 +269,22 @@
 ** WK_RAY_RESHOOT_DELAY * eps_t later, when the vertex has moved off it. */
 #define WK_RAY_END_SNAP 1e-9
 #define WK_RAY_RESHOOT_DELAY 1e3
+/* The reshoot picks among the pieces that pass within WK_RAY_RESHOOT_NEAR *
+** eps_d of the hit point at the time of the first shot (vertices that close
+** are one point to the simulation): which of the pieces at that vertex the
+** ray enters.  Over the whole cycle it took whatever the ray met at the
+** later time, and in the delay a fast vertex can sweep its piece across the
+** ray: a fuzz finding (tests/data/fuzz/, the H at 1e6 with needles
+** 1e5..5e5 long, issue 11): a reflex vertex's ray through a convex corner
+** 1.4 away got the piece of a needle's reflex vertex (speed 2e5, 280 units
+** in the delay) whose edge is collinear with the shooting vertex's own, so
+** the hit was at the ray's start: its A(P) segment was empty, and the
+** head-on collision of the two reflex vertices was never found (a cycle,
+** exit 3).  When the ray meets none of those pieces later (the hit point
+** is the shooting vertex itself, its neighbour's piece collapsing there:
+** 3 shots on the star n = 200 of make regress), the whole cycle decides,
+** as before; with that, no counter of make regress changed. */
+#define WK_RAY_RESHOOT_NEAR 1.0
 /* A point moving on a ray that rides along with a wavefront vertex (the
 ** vertex moves on the ray itself: head-on reflex vertices) never leaves its
 ** piece: their relative rate is zero within this times their speeds. */

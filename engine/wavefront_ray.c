@@ -35,12 +35,29 @@ double wk_wf_ray_hit_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32
     return lam;
 }
 
+/* The point a shot is restricted to (the reshoot below): a piece counts
+** only if at time t0 it passes within r of x. */
+typedef struct ray_near {
+    wk_point x;
+    double t0, r;
+} ray_near;
+
+static bool piece_near(const wk_wavefront *W, uint32_t a, const ray_near *n) {
+    wk_point pa = wk_wf_position(W, a, n->t0), pb = wk_wf_position(W, wk_wf_next(W, a), n->t0);
+    double dx = pb.x - pa.x, dy = pb.y - pa.y, ex = n->x.x - pa.x, ey = n->x.y - pa.y;
+    double l2 = dx * dx + dy * dy, s = l2 > 0 ? (ex * dx + ey * dy) / l2 : 0;
+    if (s < 0) s = 0;
+    if (s > 1) s = 1;
+    return hypot(ex - s * dx, ey - s * dy) <= n->r;
+}
+
 static void shoot_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, uint32_t a,
-                        double t, double lambda0, uint32_t *best, double *bl, bool *at_end) {
+                        double t, double lambda0, const ray_near *near, uint32_t *best, double *bl,
+                        bool *at_end) {
     double mu;
     if (v != WK_NONE && (a == v || wk_wf_next(W, a) == v)) return; /* v's own pieces */
     double lam = wk_wf_ray_hit_piece(W, o, u, a, t, lambda0, &mu);
-    if (lam < *bl) {
+    if (lam < *bl && (!near || piece_near(W, a, near))) {
         *bl = lam;
         *best = a;
         *at_end = mu < WK_RAY_END_SNAP || mu > 1 - WK_RAY_END_SNAP;
@@ -49,31 +66,38 @@ static void shoot_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32_t 
 
 /* One shot at time t over v's cycle (every alive piece with holes). */
 static uint32_t shoot_at(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, double t,
-                         double lambda0, bool *at_end) {
+                         double lambda0, const ray_near *near, bool *at_end, double *bl_out) {
     uint32_t best = WK_NONE;
     double bl = INFINITY;
     if (wk_wf_polygon(W)->n_rings == 1 && v != WK_NONE) {
         for (uint32_t a = wk_wf_next(W, v); a != v; a = wk_wf_next(W, a))
-            shoot_piece(W, o, u, v, a, t, lambda0, &best, &bl, at_end);
+            shoot_piece(W, o, u, v, a, t, lambda0, near, &best, &bl, at_end);
     } else {
         for (uint32_t a = 0; a < wk_wf_vertex_count(W); a++)
-            if (wk_wf_alive(W, a)) shoot_piece(W, o, u, v, a, t, lambda0, &best, &bl, at_end);
+            if (wk_wf_alive(W, a)) shoot_piece(W, o, u, v, a, t, lambda0, near, &best, &bl, at_end);
     }
+    if (bl_out) *bl_out = bl;
     return best;
 }
 
 uint32_t wk_wf_ray_shoot(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, double t,
                          double lambda0) {
     bool at_end = false;
-    uint32_t a = shoot_at(W, o, u, v, t, lambda0, &at_end);
+    double bl;
+    uint32_t a = shoot_at(W, o, u, v, t, lambda0, NULL, &at_end, &bl);
     if (a != WK_NONE && at_end && v != WK_NONE) {
         /* a hit at a vertex is ambiguous (the ray passes through a wavefront
         ** vertex right now): shoot again a moment later, when that vertex has
-        ** moved off the ray */
+        ** moved off the ray.  Only the pieces at the hit point now (within
+        ** WK_RAY_RESHOOT_NEAR * eps_d) count: the question is which of them
+        ** the ray enters, and a fast vertex elsewhere may sweep its piece
+        ** across the ray in the delay (tolerance.h) */
         double later = t + WK_RAY_RESHOOT_DELAY * wk_wf_eps_t(W);
         wk_point pv = wk_wf_position(W, v, later);
         double l1 = (pv.x - o.x) * u.x + (pv.y - o.y) * u.y;
-        uint32_t b = shoot_at(W, o, u, v, later, l1, &at_end);
+        ray_near near = {{o.x + bl * u.x, o.y + bl * u.y}, t, WK_RAY_RESHOOT_NEAR * wk_wf_eps_d(W)};
+        uint32_t b = shoot_at(W, o, u, v, later, l1, &near, &at_end, NULL);
+        if (b == WK_NONE) b = shoot_at(W, o, u, v, later, l1, NULL, &at_end, NULL);
         if (b != WK_NONE) a = b;
     }
     return a;

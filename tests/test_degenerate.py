@@ -69,7 +69,12 @@ KNOWN_GENERATED = {}
 # deforming applies the engine's slow-stretch rule (resolve.c,
 # plan_slow_stretches).
 # A file here fails only in the way named (a listed file that passes, or fails otherwise, fails the test).
-KNOWN_FILES = {}
+KNOWN_FILES = {
+    # the turned H with needles (arrneedle, issue 11): motorcycle lets reflex vertex 9 run on through
+    # reflex vertex 2 where naive and arrangement meet them head-on (sub-tolerance: edges collinear up to rounding)
+    "arr_headon_turned_needles.wpoly": "motorcycle differs from naive",
+    "arr_headon_turned_needles_collinear.wpoly": "motorcycle differs from naive",
+}
 DATA = os.path.join(tl.DATA, "degenerate")
 # Kinds of skipped inputs (Tally.skip): counted and every one named in the
 # report; the tests say which inputs are required (a skip is a failure).

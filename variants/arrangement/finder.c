@@ -365,6 +365,32 @@ static wk_status remove_segment(ar_state *A, uint32_t si) {
 
 /* -------------------------------------------------------------- hooks */
 
+/* Head-on (AR_FRONT): the piece of reflex vertex p's two (not v's own)
+** that the reference's split test has v split before v's current
+** candidate, the earliest, among those whose crossing with v's segment S
+** closes in on v (the only ones F can be put on: ar_full's rate); WK_NONE
+** if none. */
+static uint32_t headon_piece(const wk_wavefront *W, const ar_seg *S, uint32_t v, uint32_t p,
+                             double t) {
+    uint32_t two[2] = {wk_wf_prev(W, p), p}, best = WK_NONE;
+    double best_t = INFINITY;
+    for (int c = 0; c < 2; c++) {
+        uint32_t a = two[c];
+        if (a == v || wk_wf_next(W, a) == v) continue;
+        wk_wf_split_search s;
+        wk_wf_split_begin(W, v, &s);
+        wk_wf_split_test(W, &s, a);
+        if (s.a == WK_NONE || !(s.t < best_t)) continue;
+        const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+        double rate = (lambda_on_line(S, L, t + 1) - lambda_on_line(S, L, t)) -
+                      (lambda_v(W, S, t + 1) - lambda_v(W, S, t));
+        if (!(rate < 0)) continue;
+        best = a;
+        best_t = s.t;
+    }
+    return best;
+}
+
 /* Defensive fallback: v's first hit over its whole cycle, for the rare
 ** reflex vertex whose F is unknown (its ray met no piece: a vanishing
 ** cycle, or a ray through a vertex that stays ambiguous). */
@@ -676,6 +702,40 @@ static wk_status ar_process_next(void *ud, wk_wavefront *W) {
                 }
             }
             if (pick != WK_NONE && cut(A, W, sj, pick, lx, S->id) != WK_OK) return R->err.code;
+            /* Head-on: v' is at X now too (within eps_d), so v may split
+            ** one of v''s pieces as well, as the reference's search finds it
+            ** (one group, both seeded): s is cut at X onto the piece of v'
+            ** that the reference's split test picks, if any, among those
+            ** whose crossing with s closes in on v (headon_piece).  The
+            ** crossing's two front events are due at the same time only up
+            ** to rounding; the first cut s' alone, and the group that
+            ** followed had v' splitting v's piece but not v splitting
+            ** v''s: v ran on through v' (the H at 1e6 with needles 1e5..5e5
+            ** long turned by 1 rad, tests/data/degenerate/
+            ** arr_headon_turned_needles.wpoly: v of speed 2e5, the two
+            ** front events 3.5e-11 apart; a valid skeleton, not the
+            ** reference's).  The reference's test decides, not v''s
+            ** facing piece: a tip that passes a hole's apex 4.1e-7 (1.5
+            ** eps_d) apart splits the hole's edge beyond the apex, not the
+            ** apex's pieces (tests/data/holes/
+            ** near_touch_tip_passes_apex_above_tol.wpoly).  Closing in: v
+            ** on the line of v''s other edge (collinear with v's own up to
+            ** rounding) passes the split test at once, but F on that line
+            ** rides along with v and ar_full offers nothing; naive splits
+            ** the piece v runs into (tests/data/degenerate/
+            ** arr_headon_turned_needles_collinear.wpoly).  Not for
+            ** neighbours: two adjacent reflex vertices at one crossing are
+            ** the edge event of the piece between them (weighted stars and
+            ** spirals of make regress). */
+            S = &A->s[si];
+            T = &A->s[sj];
+            double ls = x.s, lvs = lambda_v(W, S, t), lfs = lambda_f(W, S, t);
+            bool nb = T->v == wk_wf_next(W, S->v) || T->v == wk_wf_prev(W, S->v);
+            if (!nb && fabs(lx - lv) <= wk_wf_eps_d(W) && ls > lvs - wk_wf_eps_d(W) &&
+                (!isfinite(lfs) || ls < lfs - wk_wf_eps_d(W))) {
+                uint32_t back = headon_piece(W, S, S->v, T->v, t);
+                if (back != WK_NONE && cut(A, W, si, back, ls, sj) != WK_OK) return R->err.code;
+            }
         }
     }
     S = &A->s[si];
