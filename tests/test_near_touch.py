@@ -221,8 +221,6 @@ FILES_PREFIX = "near_touch_"
 KNOWN_FILES = {
     "near_touch_tip_passes_apex_above_tol.wpoly": "deforming",
     "near_touch_two_holes_deforming_contact.wpoly": "deforming",
-    # deforming differs on main too (not analysed; the file is arrangement's)
-    "near_touch_three_holes_stale_target.wpoly": "deforming",
 }
 
 
