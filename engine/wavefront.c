@@ -156,32 +156,28 @@ bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t
     return L->nx * vel.x + L->ny * vel.y - L->w <= 0;
 }
 
-/* Where input vertex x is relative to input vertex y at time t: the input
-** coordinates' difference (exact for points closer than either's
-** magnitude, Sterbenz) plus the relative motion, so a gap far below eps_d
-** keeps its sign and size, which positions relative to W->origin (rounded
-** to the coordinates' ulps) would not. */
-static wk_point input_rel(const wk_wavefront *W, uint32_t x, uint32_t y, double t) {
-    const wk_wf_vertex *X = &W->v[x], *Y = &W->v[y];
-    return (wk_point){(W->P->p[x].x - W->P->p[y].x) + (X->vel.x - Y->vel.x) * t,
-                      (W->P->p[x].y - W->P->p[y].y) + (X->vel.y - Y->vel.y) * t};
-}
-
 int wf_input_cut_side(const wk_wavefront *W, uint32_t v, uint32_t x, const wk_offset_line *L, int end,
                       double t) {
     if (!W->input_sides || !wf_is_input_vertex(W, v) || !wf_is_input_vertex(W, x)) return 0;
-    const wk_wf_vertex *V = &W->v[v], *X = &W->v[x];
-    double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
+    return wk_input_cut_side(W->P, v, W->v[v].vel, x, W->v[x].vel, L, end, t);
+}
+
+int wk_input_cut_side(const wk_polygon *P, uint32_t v, wk_point vv, uint32_t x, wk_point vx,
+                      const wk_offset_line *L, int end, double t) {
+    double rate = L->nx * vv.x + L->ny * vv.y - L->w;
     if (!(rate < 0)) return 0;
-    /* v relative to x now, then where v meets the line (x is on it) */
-    wk_point r0 = input_rel(W, v, x, t);
+    /* v relative to x now: the input coordinates' difference (exact for
+    ** points closer than either's magnitude, Sterbenz) plus the relative
+    ** motion, so a gap far below eps_d keeps its sign and size, which
+    ** positions relative to an origin (rounded to the coordinates' ulps)
+    ** would not; then where v meets the line (x is on it) */
+    wk_point r0 = {(P->p[v].x - P->p[x].x) + (vv.x - vx.x) * t, (P->p[v].y - P->p[x].y) + (vv.y - vx.y) * t};
     double dt = (L->nx * r0.x + L->ny * r0.y) / -rate;
-    wk_point r = {r0.x + (V->vel.x - X->vel.x) * dt, r0.y + (V->vel.y - X->vel.y) * dt};
+    wk_point r = {r0.x + (vv.x - vx.x) * dt, r0.y + (vv.y - vx.y) * dt};
     double s = L->ux * r.x + L->uy * r.y;
     if (end) s = -s; /* measured from the piece's end backwards */
     double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON *
-                 (fabs(r0.x) + fabs(r0.y) +
-                  (fabs(V->vel.x) + fabs(V->vel.y) + fabs(X->vel.x) + fabs(X->vel.y)) * fabs(dt));
+                 (fabs(r0.x) + fabs(r0.y) + (fabs(vv.x) + fabs(vv.y) + fabs(vx.x) + fabs(vx.y)) * fabs(dt));
     return s > bar ? 1 : s < -bar ? -1 : 0;
 }
 
