@@ -1170,8 +1170,22 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
 
 /* -------------------------------------------------------------- commit */
 
+/* The time of node k: the group's, or for a node of one seed (plan_shields)
+** its seed's event time (t .. t_last).  The vertices a split makes there
+** start on their lines at that time: a split of a hole's edge eps_t early
+** (1.4e-10, the apex 1e-9 short of the edge) puts the two new vertices on
+** the edge's line in the wrong order (the apex's two lines cross it on the
+** other side of each other until it arrives), and the apex in front of
+** the other two then met one of them (three holes, apexes 6e-10 apart;
+** test_near_touch.py --sweep 1000 case 701, not CGAL's). */
+static double node_time(const wk_wavefront *W, uint32_t k, double t) {
+    uint32_t s = W->cl[k].own;
+    return s == WK_NONE || !(W->v[s].ev_t > t) ? t : W->v[s].ev_t;
+}
+
 static uint32_t sk_node(wk_wavefront *W, uint32_t k, double t) {
     wk_wf_cluster *c = &W->cl[k];
+    t = node_time(W, k, t);
     if (c->sk == WK_NONE) {
         uint32_t id;
         if (wk_skeleton_add_node(W->R, W->S, c->p.x + W->origin.x, c->p.y + W->origin.y, t, &id) !=
@@ -1381,7 +1395,7 @@ static wk_status commit(wk_wavefront *W, double t) {
         if (ein == eout) continue; /* the piece just passes through */
         uint32_t sk = sk_node(W, p->node, t);
         if (sk == WK_NONE) return R->err.code;
-        uint32_t v = wf_new_vertex(W, ein, eout, W->cl[p->node].p, t, sk);
+        uint32_t v = wf_new_vertex(W, ein, eout, W->cl[p->node].p, node_time(W, p->node, t), sk);
         if (v == WK_NONE || wf_mark_fresh(W, v) != WK_OK) return R->err.code;
         p = &W->pair[i];
         p->vertex = v;

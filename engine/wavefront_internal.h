@@ -151,7 +151,9 @@ void wf_link(wk_wavefront *W, uint32_t a, uint32_t b);
 bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e);
 /* True if input vertex V meets a piece's line at p at time t, s (< 0:
 ** outside the piece) from its end X, past X by more than rounding, X a
-** vertex an earlier group made (nominal tolerance and finer only). */
+** vertex an earlier group made (nominal tolerance and finer only); or
+** before X starts (a vertex of a node of one seed starts at its seed's
+** time, after the group's). */
 bool wf_made_end_passed(const wk_wavefront *W, const wk_wf_vertex *V, const wk_wf_vertex *X, wk_point p,
                         double s, double t);
 /* True if input vertex u and input edge e lie on different rings. */
