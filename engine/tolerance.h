@@ -101,6 +101,20 @@
 ** 1e-3 apart in direction that cancel over a length L diverge by 1e-3 L,
 ** so they are a sub-tolerance picture whenever the nodes could be merged. */
 #define WK_CANCEL_SIN 1e-3
+/* ... or when they bound a sliver: the nodes at least this many node radii
+** (eps_g) apart and the pieces at most 2 eps_g apart along the way (sin L <=
+** 2 eps_g, which holds when both lines pass within eps_g of both nodes).
+** That is a crack of the wavefront closing along its length, the arc its
+** bisector, every point of it within 2 eps_g of both offset lines.  Why it
+** is needed: a reflex vertex of a star with 10^5 vertices (speed 8.5e3)
+** splits a crack whose sides are 1.2e-3 apart in direction, 300 eps_d from
+** the crack's tip and within eps_d of both sides; the two sides then run
+** between the split's node and the tip's node and WK_CANCEL_SIN alone
+** failed the run (bin/wskel-gen star --n 100000 --seed 1, every variant;
+** star --n 50000 --seed 1).  Why 64: nodes 64 radii apart are two points at
+** the group's scale, which no widening short of 32 eps_g merges; closer
+** nodes of non-parallel pieces keep the retry that merges them. */
+#define WK_CANCEL_SLIVER_RADII 64.0
 /* A group that cannot be planned consistently with nodes eps_d wide is
 ** planned again with the radius doubled, up to this many eps_d (256 eps_d
 ** is still 4 times below the validator's default tolerance). */

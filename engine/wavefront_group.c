@@ -874,10 +874,15 @@ static wk_status plan_cancel(wk_wavefront *W) {
                 ** nodes (parallel edges meeting).  Non-parallel ones doing so
                 ** mean the two nodes are one point seen at too fine a scale
                 ** (a skeleton feature below eps_d next to a sub-tolerance
-                ** input feature): the group is planned again, coarser. */
+                ** input feature): the group is planned again, coarser.  A
+                ** long thin sliver between them is a crack closing along its
+                ** length (tolerance.h, WK_CANCEL_SLIVER_RADII). */
                 const wk_offset_line *La = &W->L[a->edge], *Lb = &W->L[b->edge];
+                double sin_ab = fabs(La->ux * Lb->uy - La->uy * Lb->ux);
+                double len = sqrt(wf_dist2(W->cl[NODE_OF(a->from)].p, W->cl[NODE_OF(a->to)].p));
+                bool sliver = len >= WK_CANCEL_SLIVER_RADII * W->eps_g && sin_ab * len <= 2 * W->eps_g;
                 if (a->edge != b->edge && (La->ux * Lb->ux + La->uy * Lb->uy > 0 ||
-                                           fabs(La->ux * Lb->uy - La->uy * Lb->ux) > WK_CANCEL_SIN))
+                                           (sin_ab > WK_CANCEL_SIN && !sliver)))
                     return WK_FAIL(R, WK_EALGO, W->P->name, 0,
                                    "wavefront: pieces of non-parallel edges %u and %u cancel between "
                                    "two nodes",

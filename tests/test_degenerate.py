@@ -62,13 +62,14 @@ KNOWN_GENERATED = {}
 # Empty now: the tiny reflex chamfers (arr_chamfer_contact,
 # deform_*chamfer*), where deforming resolved the unchamfered corner while
 # naive grows the chamfer into a face as CGAL does, agree since deforming
-# asks the engine's exactly-behind rule (wk_input_vertex_never_reaches_line).
+# asks the engine's exactly-behind rule (wk_input_vertex_never_reaches_line);
+# comb_far_slow_stretch.wpoly (deforming merged a stretch of edge 7 that
+# collapses later, a node 2% of the diagonal from naive's = CGAL's; before
+# deform5's shared_end it went to the reference, which hid it) agrees since
+# deforming applies the engine's slow-stretch rule (resolve.c,
+# plan_slow_stretches).
 # A file here fails only in the way named (a listed file that passes, or fails otherwise, fails the test).
-KNOWN_FILES = {
-    # naive = CGAL 5.5.1 (the engine's slow-stretch rule, issue 11); deforming merges the slow stretch at once (issue 14):
-    # deforming alone equalled CGAL before deform5's shared_end / exactly-behind changes were merged beside it
-    "comb_far_slow_stretch.wpoly": "deforming differs from naive",
-}
+KNOWN_FILES = {}
 DATA = os.path.join(tl.DATA, "degenerate")
 # Kinds of skipped inputs (Tally.skip): counted and every one named in the
 # report; the tests say which inputs are required (a skip is a failure).

@@ -106,6 +106,31 @@ static bool near_root(const df_state *D, double t3, double tr) {
     return fabs(t3 - tr) <= D->dt_near;
 }
 
+/* Where and when the offset lines of edges e1, e2, e3 meet: from the
+** input points in long double (wk_three_edges_meet, as the engine's edge
+** events), asked in one order (by edge id), so that an edge swap and a
+** penetration that meet at the same three lines get the same time and
+** point to the bit.  Asked on the double lines in each event's own order,
+** Cramer's rule rounded differently, and where two of the lines are
+** nearly parallel the times differed by far more than eps_t: a nearly
+** straight vertex (edges 0, 1) reaching edge 4 where the piece of edge 0
+** collapses got 3.4e-12 (1000 eps_t) before that collapse, resolved alone
+** as a penetration just beyond the piece's end (two pieces leaving the
+** point side by side, the reference: stress s1-c02552-mixed,
+** tests/data/degenerate/deform_three_lines_one_order.wpoly).  The double
+** lines in one order fixed that case but, their rounding moved, sent
+** others to the reference (s1-c01517-mixed, s1-c02434-regular_4e9) or made
+** them differ from naive (s1-c01072-nearly_straight); the long double
+** lines do neither (stress --cases 3000). */
+static bool df_three_lines_meet(const df_state *D, uint32_t e1, uint32_t e2, uint32_t e3,
+                                wk_point *m, double *t) {
+    uint32_t x;
+    if (e1 > e2) x = e1, e1 = e2, e2 = x;
+    if (e2 > e3) x = e2, e2 = e3, e3 = x;
+    if (e1 > e2) x = e1, e1 = e2, e2 = x;
+    return wk_three_edges_meet(D->P, e1, e2, e3, D->o, m, t);
+}
+
 /* Edge swap of the piece a -> next(a) within [t, t1]. */
 static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     const df_vertex *A = &D->v[a], *B = &D->v[A->next];
@@ -130,7 +155,7 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     ** near_root). */
     wk_point m;
     double t3;
-    if (l0 > 0 && wk_three_lines_meet(&D->L[A->ein], L, &D->L[B->eout], &m, &t3) && t3 >= t &&
+    if (l0 > 0 && df_three_lines_meet(D, A->ein, A->eout, B->eout, &m, &t3) && t3 >= t &&
         t3 <= t1 && near_root(D, t3, te))
         return push_event(D, t3, DF_COLLAPSE, a, WK_NONE, &m);
     if (te < t) te = t;
@@ -280,7 +305,7 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     wk_point m;
     double t3;
     double tr = g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate);
-    if (g0 > 0 && wk_three_lines_meet(&D->L[V->ein], &D->L[V->eout], L, &m, &t3) && t3 >= t &&
+    if (g0 > 0 && df_three_lines_meet(D, V->ein, V->eout, A->eout, &m, &t3) && t3 >= t &&
         t3 <= t1 && near_root(D, t3, tr))
         return contact(D, p, a, t, t1, t3, &m, eps_c, DF_PENETRATION);
     return contact(D, p, a, t, t1, tr, NULL, eps_c, DF_PENETRATION);
