@@ -145,7 +145,15 @@
 ** vertices have no input coordinates to decide by).  The same bar decides
 ** the other side: a hit of the piece's line beyond x is no split
 ** (wk_wf_split_test), and an input vertex behind the offset line of
-** another ring's edge never reaches it (wavefront.c, behind_offset_line). */
+** another ring's edge never reaches it (wavefront.c, behind_offset_line).
+** At a node where a split is so resolved, a vertex an earlier group made
+** takes part only if it lies at the node's point to this many ulps of the
+** points and of its motion (wavefront_group.c, bystander): there the
+** input's picture is finer than eps_d (three holes whose apexes lie 2.5e-9
+** apart, tests/data/holes/near_touch_three_holes_bystanders.wpoly), and an
+** input vertex meeting another ring's piece past an end that a group made
+** by more than this many ulps does not split the piece (wavefront.c,
+** wf_made_end_passed; near_touch_three_holes_passes_made_end.wpoly). */
 #define WK_SPLIT_SIDE_ULPS 64.0
 /* ... and only when the stretch of the piece between x and the cut grows
 ** faster than this times the speeds of its ends: a stretch that shrinks

@@ -134,6 +134,19 @@ void wk_wf_near_split(wk_wavefront *W, uint32_t v);
 bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t u, wk_point vel,
                                         const wk_offset_line *L, uint32_t e);
 
+/* The side rule of rings that nearly touch (wavefront.c, the split test and
+** the shields of a group): where input vertex v of P (velocity vv since
+** t = 0), approaching the offset line L, meets it relative to input vertex
+** x on L (velocity vx), an end of a piece of L (end 0: its start, 1: its
+** end), from the input coordinates at time t: +1 inside the piece by more
+** than rounding (WK_SPLIT_SIDE_ULPS), -1 outside it past x by more than
+** rounding, 0 within rounding of x or when v does not approach L.  For a
+** variant with its own wavefront, so that its contacts between rings
+** follow the engine's (at the nominal tolerance and finer only, as the
+** engine's). */
+int wk_input_cut_side(const wk_polygon *P, uint32_t v, wk_point vv, uint32_t x, wk_point vx,
+                      const wk_offset_line *L, int end, double t);
+
 /* ------------------------------------- rays along a segment (wavefront_ray.c)
 ** For finders that follow a moving Steiner vertex along a static segment
 ** o + lambda u (u a unit vector, relative coordinates): 000's segments,

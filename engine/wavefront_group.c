@@ -10,9 +10,10 @@
 **      vertices that take part (plan_nodes);
 **   2. every vertex of the touched cycles within tolerance of a node arrives
 **      there (plan_arrivals), unless shielded from it: across a gap between
-**      rings (plan_shields) or by a stretch that collapses later
-**      (plan_slow_stretches); every piece passing through a node is cut
-**      there (plan_pinches, plan_seed_cuts);
+**      rings (plan_shields; two splits that cut both pieces of one vertex
+**      get a node each), as a bystander of such a node (bystander) or by a
+**      stretch that collapses later (plan_slow_stretches); every piece
+**      passing through a node is cut there (plan_pinches, plan_seed_cuts);
 **   3. the cycles become directed sub-pieces between points (nodes or
 **      untouched vertices); zero-length sub-pieces vanish (edge events);
 **      two opposite sub-pieces between the same two nodes cancel and leave a
@@ -156,14 +157,28 @@ static uint32_t find_cluster(wk_wavefront *W, wk_point p) {
     return WK_NONE;
 }
 
+/* A new node at p (own: the seed it belongs to alone, or WK_NONE). */
+static wk_status new_cluster(wk_wavefront *W, wk_point p, uint32_t own, uint32_t *k) {
+    if (WK_GROW(W->R, W->cl, W->cap_cl, W->n_cl + 1) != WK_OK) return W->R->err.code;
+    W->cl[W->n_cl] = (wk_wf_cluster){p, WK_NONE, 0, 0, 0, 0, 0, 0, own};
+    *k = W->n_cl++;
+    if (own != WK_NONE) W->n_own++;
+    if (W->cg_on && wk_point_grid_add(W->R, &W->cg, *k, p) != WK_OK) return W->R->err.code;
+    return WK_OK;
+}
+
 static wk_status add_cluster(wk_wavefront *W, wk_point p, uint32_t *k) {
     *k = find_cluster(W, p);
     if (*k != WK_NONE) return WK_OK;
-    if (WK_GROW(W->R, W->cl, W->cap_cl, W->n_cl + 1) != WK_OK) return W->R->err.code;
-    W->cl[W->n_cl] = (wk_wf_cluster){p, WK_NONE, 0, 0, 0, 0, 0, 0};
-    *k = W->n_cl++;
-    if (W->cg_on && wk_point_grid_add(W->R, &W->cg, *k, p) != WK_OK) return W->R->err.code;
-    return WK_OK;
+    return new_cluster(W, p, WK_NONE, k);
+}
+
+/* The node of seed s: its own (plan_shields) or the node at its event
+** point. */
+static uint32_t seed_node(wk_wavefront *W, uint32_t s) {
+    for (uint32_t k = 0; W->n_own && k < W->n_cl; k++)
+        if (W->cl[k].own == s) return k;
+    return find_cluster(W, W->v[s].ev_p);
 }
 
 /* ----------------------------------------------------------- collect */
@@ -399,6 +414,7 @@ static wk_status plan_shields(wk_wavefront *W, double t) {
         if (!W->v[a].alive || W->v[a].next != b) continue;
         uint32_t k = find_cluster(W, V->ev_p);
         if (k == WK_NONE) continue;
+        uint32_t n0 = W->n_shield;
         const wk_offset_line *L = &W->L[W->v[a].eout];
         for (int end = 0; end < 2; end++) {
             uint32_t x = end ? b : a;
@@ -429,10 +445,36 @@ static wk_status plan_shields(wk_wavefront *W, double t) {
                               : L->ux * (vy.x - X->vel.x) + L->uy * (vy.y - X->vel.y);
             double speeds = fabs(vy.x) + fabs(vy.y) + fabs(X->vel.x) + fabs(X->vel.y);
             if (!(grow > WK_SPLIT_SIDE_GROWTH_REL * speeds)) continue;
+            /* x shielded from k on its other piece too, by another split:
+            ** the two splits cut x's two pieces next to it, at two points
+            ** below eps_d apart (x's corner between them).  One node would
+            ** join them where the input keeps them apart: x's pieces
+            ** k -> x -> k enclose its corner, which the pairing at one point
+            ** closes (a cycle of two vertices), and with both cuts at one
+            ** node the skeleton gains a cycle (--check: "closes cycle").
+            ** This split gets a node of its own at its event point.  Three
+            ** holes whose apexes lie 1e-9 apart, one apex in front of the
+            ** other two's edges: the two others split its edges and it
+            ** goes on (CGAL's skeleton, and the reference's with the gaps
+            ** magnified 1e3..1e7 times, holes moved rigidly;
+            ** tests/data/holes/near_touch_three_holes_both_sides.wpoly). */
+            uint32_t other = end ? x : W->v[x].prev; /* x's other piece */
+            bool both = false;
+            for (uint32_t j = 0; j < n0; j++)
+                both |= W->shield[j].vertex == x && W->shield[j].node == k && W->shield[j].piece == other;
+            if (both) {
+                uint32_t k2;
+                if (new_cluster(W, V->ev_p, v, &k2) != WK_OK) return R->err.code;
+                /* this seed's earlier shields (its piece's other end) follow it */
+                for (uint32_t j = n0; j < W->n_shield; j++)
+                    if (W->shield[j].node == k) W->shield[j].node = k2;
+                k = k2;
+            }
             if (WK_GROW(R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return R->err.code;
             W->shield[W->n_shield++] = (wk_wf_shield){x, k, a};
         }
     }
+    W->n_gap_shield = W->n_shield;
     return WK_OK;
 }
 
@@ -499,7 +541,7 @@ static wk_status plan_slow_stretches(wk_wavefront *W, double t) {
     if (!W->input_sides || W->n_forced) return WK_OK;
     for (uint32_t k = 0; k < W->n_cl; k++) W->cl[k].count = 0;
     for (uint32_t i = 0; i < W->n_seeds; i++) {
-        uint32_t s = W->seeds[i], k = find_cluster(W, W->v[s].ev_p);
+        uint32_t s = W->seeds[i], k = seed_node(W, s);
         bool echo = split_misses_piece(W, s, t);
         W->v[s].at = k == WK_NONE ? WK_NONE : echo ? k | ECHO_BIT : k;
         if (k != WK_NONE && !echo) W->cl[k].count++;
@@ -544,9 +586,67 @@ static wk_status plan_slow_stretches(wk_wavefront *W, double t) {
     return st == WK_OK ? WK_OK : W->R->err.code;
 }
 
+/* True if a split of this group resolves a gap between rings at node k on
+** the input's side (plan_shields shielded a vertex from it; not
+** plan_slow_stretches, whose stretches are the tolerance's business). */
+static bool input_side_node(const wk_wavefront *W, uint32_t k) {
+    for (uint32_t i = 0; i < W->n_gap_shield; i++)
+        if (W->shield[i].node == k) return true;
+    return false;
+}
+
+/* True if u is a seed of the group or an end of a split seed's target. */
+static bool seed_or_target(const wk_wavefront *W, uint32_t u) {
+    for (uint32_t i = 0; i < W->n_seeds; i++) {
+        const wk_wf_vertex *S = &W->v[W->seeds[i]];
+        if (W->seeds[i] == u || (S->ev_kind == WK_WF_SPLIT && (S->ev_a == u || S->ev_b == u))) return true;
+    }
+    return false;
+}
+
+/* A bystander of an input-side node: vertex u (not a seed, not an end of
+** a split's target, not shielded by plan_shields) lies within tolerance of
+** node k, where a split resolves a gap between rings on the input's side
+** (input_side_node).  There the input's picture is finer than eps_d, and u
+** takes part only if it is at the node's point to rounding at some moment
+** of the group (t .. t_last; rounding: WK_SPLIT_SIDE_ULPS ulps of the
+** points and of u's motion since it was made, its speed s counted as
+** s + s^2 / w as in behind_offset_line).  Farther, it is shielded from the
+** node (piece WK_NONE: the node cuts none of its pieces).  Three holes
+** whose apexes lie 2.5e-9 apart: the first apex splits the second's edge
+** next to its apex (an input-side split), and the third splits the
+** second's other edge 1e-9 later, 5e-9 away: the vertices the first split
+** made, 5e-9 from that node and moving away, arrived there, closed the
+** second apex's corner into a triangle of no area (plan_force_touching)
+** and the skeleton lost the second apex's arc (CGAL's skeleton keeps it;
+** tests/data/holes/near_touch_three_holes_bystanders.wpoly).  Input
+** vertices too: with only the made ones kept apart, the first apex
+** (1e-7 from the node) arrived alone and the skeleton was not CGAL's
+** (tests/data/holes/near_touch_three_holes_stale_target.wpoly).  And a
+** vertex made at such a node (gap_made) at any later node: kept apart at
+** one node, two such vertices 1e-7 from the next one (an edge event with
+** a split of the same gap, 9e-8 later) arrived there by the tolerance, and
+** the skeleton was not the one of the same input with the gaps magnified
+** 10 .. 1000 times, where they do not (weighted three holes,
+** tests/data/holes/near_touch_three_holes_gap_made.wpoly). */
+static bool bystander(const wk_wavefront *W, uint32_t u, uint32_t k, double t) {
+    const wk_wf_vertex *U = &W->v[u];
+    if (!W->input_sides || !(U->gap_made || input_side_node(W, k)) || seed_or_target(W, u)) return false;
+    wk_point q = W->cl[k].p, a = wk_wf_pos(U, t);
+    /* the nearest point to q of u's track over the group's time span */
+    double dt = W->t_last - t, v2 = U->vel.x * U->vel.x + U->vel.y * U->vel.y;
+    double h = v2 > 0 ? ((q.x - a.x) * U->vel.x + (q.y - a.y) * U->vel.y) / v2 : 0;
+    h = fmin(fmax(h, 0), dt);
+    wk_point c = {a.x + U->vel.x * h, a.y + U->vel.y * h};
+    double s = fabs(U->vel.x) + fabs(U->vel.y), w = fmin(W->L[U->ein].w, W->L[U->eout].w);
+    double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON *
+                 (fabs(q.x) + fabs(q.y) + fabs(U->p0.x) + fabs(U->p0.y) + (s + s * s / w) * (t + dt - U->t0));
+    return wf_dist2(c, q) > bar * bar;
+}
+
 /* Step 2a: every vertex within tolerance of a node arrives there (unless
-** shielded from it). */
-static void plan_arrivals(wk_wavefront *W, double t) {
+** shielded from it, or a bystander of it). */
+static wk_status plan_arrivals(wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < W->n_comp; i++) {
         wk_wf_vertex *u = &W->v[W->comp[i]];
         /* within the group's time span (its seeds' times, t .. t_last <=
@@ -558,6 +658,15 @@ static void plan_arrivals(wk_wavefront *W, double t) {
         u->at = find_cluster_within(W, wk_wf_pos(u, t),
                                     W->eps_g + speed * (W->t_last - t) * (W->eps_g / W->eps_d));
         if (u->at != WK_NONE && W->n_shield && shield_of(W, W->comp[i], u->at)) u->at = WK_NONE;
+        if (u->at != WK_NONE && (W->n_shield || u->gap_made) && bystander(W, W->comp[i], u->at, t)) {
+            if (WK_GROW(W->R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return W->R->err.code;
+            W->shield[W->n_shield++] = (wk_wf_shield){W->comp[i], u->at, WK_NONE};
+            u = &W->v[W->comp[i]];
+            u->at = WK_NONE;
+        }
+        /* a seed with a node of its own arrives there, wherever it is now */
+        for (uint32_t k = 0; W->n_own && k < W->n_cl; k++)
+            if (W->cl[k].own == W->comp[i]) u->at = k;
     }
     /* a free vertex whose two neighbours arrive at the same node closes a
     ** triangle of zero size with it: it arrives too */
@@ -570,10 +679,11 @@ static void plan_arrivals(wk_wavefront *W, double t) {
     }
     for (uint32_t i = 0; i < W->n_seeds; i++) {
         wk_wf_vertex *u = &W->v[W->seeds[i]];
-        if (u->at == WK_NONE && !(W->n_shield && shield_of(W, W->seeds[i], find_cluster(W, u->ev_p))))
-            u->at = find_cluster(W, u->ev_p);
+        if (u->at == WK_NONE && !(W->n_shield && shield_of(W, W->seeds[i], seed_node(W, W->seeds[i]))))
+            u->at = seed_node(W, W->seeds[i]);
         if (u->ev_kind == WK_WF_EDGE && W->v[u->next].at == WK_NONE) W->v[u->next].at = u->at;
     }
+    return WK_OK;
 }
 
 /* A local walk (collect_local) is enough only if the group stays inside
@@ -1050,15 +1160,15 @@ static wk_status plan_pairs(wk_wavefront *W, double t, bool *again) {
 static wk_status plan(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
     *again = false;
-    W->n_cl = W->n_pin = W->n_sub = W->n_pair = 0;
+    W->n_cl = W->n_pin = W->n_sub = W->n_pair = W->n_own = 0;
     if (plan_nodes(W, t) != WK_OK || plan_shields(W, t) != WK_OK || plan_slow_stretches(W, t) != WK_OK)
         return R->err.code;
-    plan_arrivals(W, t);
+    if (plan_arrivals(W, t) != WK_OK) return R->err.code;
     if (W->local_walk && !local_walk_suffices(W, t)) {
         /* the group reaches beyond the local walk: take whole cycles */
         W->local_walk = false;
         if (collect_cycles(W) != WK_OK) return R->err.code;
-        plan_arrivals(W, t);
+        if (plan_arrivals(W, t) != WK_OK) return R->err.code;
     }
     if (plan_pinches(W, t) != WK_OK || plan_seed_cuts(W, t) != WK_OK) return R->err.code;
     if (plan_sub_pieces(W) != WK_OK || plan_cancel(W) != WK_OK) return R->err.code;
@@ -1071,8 +1181,22 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
 
 /* -------------------------------------------------------------- commit */
 
+/* The time of node k: the group's, or for a node of one seed (plan_shields)
+** its seed's event time (t .. t_last).  The vertices a split makes there
+** start on their lines at that time: a split of a hole's edge eps_t early
+** (1.4e-10, the apex 1e-9 short of the edge) puts the two new vertices on
+** the edge's line in the wrong order (the apex's two lines cross it on the
+** other side of each other until it arrives), and the apex in front of
+** the other two then met one of them (three holes, apexes 6e-10 apart;
+** test_near_touch.py --sweep 1000 case 701, not CGAL's). */
+static double node_time(const wk_wavefront *W, uint32_t k, double t) {
+    uint32_t s = W->cl[k].own;
+    return s == WK_NONE || !(W->v[s].ev_t > t) ? t : W->v[s].ev_t;
+}
+
 static uint32_t sk_node(wk_wavefront *W, uint32_t k, double t) {
     wk_wf_cluster *c = &W->cl[k];
+    t = node_time(W, k, t);
     if (c->sk == WK_NONE) {
         uint32_t id;
         if (wk_skeleton_add_node(W->R, W->S, c->p.x + W->origin.x, c->p.y + W->origin.y, t, &id) !=
@@ -1282,8 +1406,9 @@ static wk_status commit(wk_wavefront *W, double t) {
         if (ein == eout) continue; /* the piece just passes through */
         uint32_t sk = sk_node(W, p->node, t);
         if (sk == WK_NONE) return R->err.code;
-        uint32_t v = wf_new_vertex(W, ein, eout, W->cl[p->node].p, t, sk);
+        uint32_t v = wf_new_vertex(W, ein, eout, W->cl[p->node].p, node_time(W, p->node, t), sk);
         if (v == WK_NONE || wf_mark_fresh(W, v) != WK_OK) return R->err.code;
+        W->v[v].gap_made = W->n_gap_shield && input_side_node(W, p->node);
         p = &W->pair[i];
         p->vertex = v;
     }

@@ -214,16 +214,9 @@ FILES_DIR = os.path.join(tl.DATA, "holes")
 FILES_PREFIX = "near_touch_"
 # Files with a known failure: name -> the check (label) every failure of the
 # file must come from; the test fails when one passes or fails otherwise.
-# deforming's contact test takes a vertex that meets a piece's line within
-# its contact distance beyond an end for a contact, where naive (= CGAL,
-# = the exact first event) decides the side from the input (engine,
-# wf_input_cut_side).  Open: deforming must follow (issue 11).
-KNOWN_FILES = {
-    "near_touch_tip_passes_apex_above_tol.wpoly": "deforming",
-    "near_touch_two_holes_deforming_contact.wpoly": "deforming",
-    # deforming differs on main too (not analysed; the file is arrangement's)
-    "near_touch_three_holes_stale_target.wpoly": "deforming",
-}
+# Empty: deforming's contacts between rings follow the engine's side rule
+# now (wk_input_cut_side in its contact test and its members, issue 11).
+KNOWN_FILES = {}
 
 
 def file_weights(path):

@@ -48,6 +48,7 @@
 ** the reference, counted (deforming.c).
 */
 #include "deforming.h"
+#include "wavefront.h"
 
 #include <float.h>
 #include <math.h>
@@ -539,6 +540,42 @@ static uint32_t shared_end(const df_state *D, uint32_t p, uint32_t a, double te,
     return len <= reach ? end : WK_NONE;
 }
 
+/* Rings that nearly touch: end x of piece a (end 0: its start, 1: its
+** end), an input vertex, within the contact distance of the point where an
+** input vertex p of another ring penetrates the piece, does not end there
+** when the input says p meets the piece's line inside the piece by more
+** than rounding and the stretch of the piece between x and the cut grows:
+** the engine's rule (wavefront_group.c, plan_shields; wk_input_cut_side),
+** at the nominal tolerance and finer as there.  A member, x joined the two
+** rings where naive and CGAL keep them apart: two holes whose apexes lie
+** 1e-6 apart (3.4 eps_d), one apex splitting the other's edge 4e-8 from
+** its apex (tests/test_near_touch.py --sweep 1000 case 40, 6 more). */
+static bool passed_by(const df_state *D, uint32_t a, int end, double te) {
+    const df_vertex *A = &D->v[a];
+    uint32_t x = end ? A->next : a;
+    const df_vertex *X = &D->v[x];
+    if (D->R->opt.tol_scale > 1 || x >= D->P->n || X->t0 != 0) return false;
+    const wk_offset_line *L = &D->L[A->eout];
+    for (uint32_t i = 0; i < D->n_ev; i++) {
+        const df_event *E = &D->ev[i];
+        if (E->kind != DF_PENETRATION || E->b != a) continue;
+        uint32_t p = E->a;
+        const df_vertex *V = &D->v[p];
+        if (p >= D->P->n || V->t0 != 0 || wk_polygon_ring(D->P, p) == wk_polygon_ring(D->P, x)) continue;
+        if (wk_input_cut_side(D->P, p, V->v, x, X->v, L, end, te) <= 0) continue;
+        /* the stretch between x and the vertex the cut makes there grows */
+        wk_point vy;
+        const wk_offset_line *Lf = &D->L[end ? V->ein : V->eout];
+        if ((end ? wk_vertex_velocity(Lf, L, &vy) : wk_vertex_velocity(L, Lf, &vy)) != WK_VEL_REGULAR)
+            continue;
+        double grow = end ? L->ux * (X->v.x - vy.x) + L->uy * (X->v.y - vy.y)
+                          : L->ux * (vy.x - X->v.x) + L->uy * (vy.y - X->v.y);
+        double speeds = fabs(vy.x) + fabs(vy.y) + fabs(X->v.x) + fabs(X->v.y);
+        if (grow > WK_SPLIT_SIDE_GROWTH_REL * speeds) return true;
+    }
+    return false;
+}
+
 /* Where event E happens at te. */
 static wk_point event_point(const df_state *D, const df_event *E, double te) {
     if (E->at_x) return E->x;
@@ -713,6 +750,7 @@ static wk_status resolve(df_state *D, double te) {
             uint32_t ends[2] = {a, D->v[a].next};
             for (int j = 0; j < 2; j++)
                 if (D->member[ends[j]] == WK_NONE && within_reach(D, ends[j], S->cx[k], te, eps_c, span) &&
+                    !passed_by(D, a, j, te) &&
                     add_member(D, ends[j], k) != WK_OK)
                     return R->err.code;
         }
