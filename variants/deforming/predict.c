@@ -127,10 +127,17 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     ** ill-conditioned; the time where the three offset lines meet comes
     ** from the input lines alone (as CGAL's trisegments and the engine's
     ** edge events), so it is taken when it falls in the step (see
-    ** near_root). */
+    ** near_root).  Solved as the engine's edge events are, on lines built
+    ** from the input points in long double (wk_three_edges_meet): on the
+    ** double offset lines (wk_three_lines_meet) a point on an ellipse of
+    ** 3000 vertices (bin/wskel-gen convex --n 3000 --seed 1), three nearly
+    ** parallel lines, came out 1e-6 off; the vertex born there missed its
+    ** lines by more than the snap, its later collapses were 1e-3 off in
+    ** time (slowly shrinking pieces), and 12 nodes were 2e-3 from naive's
+    ** and CGAL's (tests/test_deforming.py, TestEllipse). */
     wk_point m;
     double t3;
-    if (l0 > 0 && wk_three_lines_meet(&D->L[A->ein], L, &D->L[B->eout], &m, &t3) && t3 >= t &&
+    if (l0 > 0 && wk_three_edges_meet(D->P, A->ein, A->eout, B->eout, D->o, &m, &t3) && t3 >= t &&
         t3 <= t1 && near_root(D, t3, te))
         return push_event(D, t3, DF_COLLAPSE, a, WK_NONE, &m);
     if (te < t) te = t;
@@ -259,11 +266,12 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     ** which between nearly antiparallel edges is huge and inexact: a vertex
     ** racing up a spike 1e10 long whose sides are 1e-10 apart met the far
     ** side at t 0.78 instead of 0.93, 1e5 short of the node
-    ** (tests/data/fuzz/mismatch_deforming_regular5_far_node.wpoly). */
+    ** (tests/data/fuzz/mismatch_deforming_regular5_far_node.wpoly).  The
+    ** lines in long double, as in test_swap. */
     wk_point m;
     double t3;
     double tr = g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate);
-    if (g0 > 0 && wk_three_lines_meet(&D->L[V->ein], &D->L[V->eout], L, &m, &t3) && t3 >= t &&
+    if (g0 > 0 && wk_three_edges_meet(D->P, V->ein, V->eout, A->eout, D->o, &m, &t3) && t3 >= t &&
         t3 <= t1 && near_root(D, t3, tr))
         return contact(D, p, a, t, t1, t3, &m, eps_c, DF_PENETRATION);
     return contact(D, p, a, t, t1, tr, NULL, eps_c, DF_PENETRATION);
