@@ -134,7 +134,7 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     ** parallel lines, came out 1e-6 off; the vertex born there missed its
     ** lines by more than the snap, its later collapses were 1e-3 off in
     ** time (slowly shrinking pieces), and 12 nodes were 2e-3 from naive's
-    ** and CGAL's (tests/test_deforming.py, TestEllipse). */
+    ** and CGAL's (tests/test_deforming.py, test_ellipse_same_as_naive). */
     wk_point m;
     double t3;
     if (l0 > 0 && wk_three_edges_meet(D->P, A->ein, A->eout, B->eout, D->o, &m, &t3) && t3 >= t &&
@@ -348,9 +348,11 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     if (g0 > 0 && wk_three_edges_meet(D->P, V->ein, V->eout, A->eout, D->o, &m, &t3) && t3 >= t &&
         t3 <= t1 && near_root(D, t3, tr))
         return contact(D, p, a, t, t1, t3, &m, eps_c, DF_PENETRATION);
-    tr = shared_end_root(D, p, a, t, tr, rate);
-    /* the collapse after the search's end: a later window finds it */
-    if (tr > t1) return WK_OK;
+    double tc = shared_end_root(D, p, a, t, tr, rate);
+    if (tc != tr) {
+        if (tc > t1) return WK_OK; /* the collapse after the search's end: a later window's */
+        tr = tc;
+    }
     return contact(D, p, a, t, t1, tr, NULL, eps_c, DF_PENETRATION);
 }
 
