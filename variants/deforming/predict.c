@@ -152,7 +152,14 @@ static wk_status test_swap(df_state *D, uint32_t a, double t, double t1) {
     ** ill-conditioned; the time where the three offset lines meet comes
     ** from the input lines alone (as CGAL's trisegments and the engine's
     ** edge events), so it is taken when it falls in the step (see
-    ** near_root). */
+    ** near_root).  Solved as the engine's edge events are, on lines built
+    ** from the input points in long double (wk_three_edges_meet): on the
+    ** double offset lines (wk_three_lines_meet) a point on an ellipse of
+    ** 3000 vertices (bin/wskel-gen convex --n 3000 --seed 1), three nearly
+    ** parallel lines, came out 1e-6 off; the vertex born there missed its
+    ** lines by more than the snap, its later collapses were 1e-3 off in
+    ** time (slowly shrinking pieces), and 12 nodes were 2e-3 from naive's
+    ** and CGAL's (tests/test_deforming.py, test_ellipse_same_as_naive). */
     wk_point m;
     double t3;
     if (l0 > 0 && df_three_lines_meet(D, A->ein, A->eout, B->eout, &m, &t3) && t3 >= t &&
@@ -244,6 +251,60 @@ static wk_status contact(df_state *D, uint32_t p, uint32_t a, double t, double t
     return push_event(D, te, kind, p, a, x);
 }
 
+/* The rounding of a vertex's terms in a root (p0 - t0 v, then v t), up to
+** the unit roundoff: what the root's numerator may be off by. */
+static double root_terms(const df_vertex *V, double t) {
+    return fabs(V->p0.x) + fabs(V->p0.y) + (fabs(V->v.x) + fabs(V->v.y)) * (fabs(V->t0) + fabs(t));
+}
+
+/* The time tr of vertex p reaching the line of the piece a -> next(a) at
+** the shared end of its own piece (the piece is the next one along the
+** cycle, or the one before the previous): the three lines are the
+** collapse's of the piece between, so the event is that collapse, which
+** test_swap times by the root of the piece's length.  When the three
+** lines are too nearly dependent to solve (wk_three_edges_meet declines)
+** the two roots are estimates of one time, and the better conditioned is
+** taken (the rounding of the terms over the rate).  The gap's rate is the
+** worse one where the vertex runs nearly along the line: between three
+** edges 1e-5..1e-3 apart in direction (random points on ellipses:
+** test_deforming.py test_flat_ellipse_same_as_naive; bin/wskel-gen convex
+** --n 10000 --seed 1, 2, 3) the gap closed at ~1e-7 of the speed, the
+** length at ~1e-3; the gap's root came first, 3e-5 to 1e-3 early, and the
+** group placed the collapse's node up to 4e-4 from naive's and CGAL's.
+** Such a vertex is within the contact distance of the line long before
+** (eps_d over 1e-7 of the speed), so g0 <= 0 takes the collapse's root
+** too.  Where the shared end is a fast spike tip the length's root is the
+** worse one and the gap's stays
+** (tests/data/fuzz/mismatch_deforming_weighted_comb_spike.wpoly). */
+static double shared_end_root(const df_state *D, uint32_t p, uint32_t a, double t, double tr,
+                              double rate) {
+    const df_vertex *V = &D->v[p];
+    uint32_t x, y;
+    const wk_offset_line *Lc;
+    if (a == V->next) { /* the piece p -> a collapses */
+        x = p;
+        y = a;
+        Lc = &D->L[V->eout];
+    } else if (D->v[a].next == V->prev) { /* the piece prev(p) -> p collapses */
+        x = V->prev;
+        y = p;
+        Lc = &D->L[V->ein];
+    } else {
+        return tr;
+    }
+    const df_vertex *X = &D->v[x], *Y = &D->v[y];
+    double rc = Lc->ux * (Y->v.x - X->v.x) + Lc->uy * (Y->v.y - X->v.y);
+    double speed = fabs(X->v.x) + fabs(X->v.y) + fabs(Y->v.x) + fabs(Y->v.y) + D->wmax;
+    if (!(rc < -WK_APPROACH_REL * speed)) return tr; /* no swap (test_swap's bar) */
+    double tc = root(Lc->ux, Lc->uy, Y, X, 0, rc);
+    if (!(tc >= t)) return tr;
+    const wk_offset_line *L = &D->L[D->v[a].eout];
+    double tg = root(L->nx, L->ny, V, NULL, L->c, rate);
+    double err_p = (root_terms(V, tg) + fabs(L->c) + fabs(L->w) * fabs(tg)) / fabs(rate);
+    double err_c = (root_terms(X, tc) + root_terms(Y, tc)) / fabs(rc);
+    return err_c < err_p ? tc : tr;
+}
+
 /* Penetration of vertex p through the piece a -> next(a) within [t, t1]. */
 static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t, double t1,
                                   double eps_c) {
@@ -301,13 +362,39 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     ** which between nearly antiparallel edges is huge and inexact: a vertex
     ** racing up a spike 1e10 long whose sides are 1e-10 apart met the far
     ** side at t 0.78 instead of 0.93, 1e5 short of the node
-    ** (tests/data/fuzz/mismatch_deforming_regular5_far_node.wpoly). */
+    ** (tests/data/fuzz/mismatch_deforming_regular5_far_node.wpoly).  The
+    ** lines in long double, as in test_swap. */
     wk_point m;
     double t3;
     double tr = g0 <= 0 ? t : root(L->nx, L->ny, V, NULL, L->c, rate);
+    /* Beyond the piece's ends at tr by more than its ends and the vertex
+    ** move in D->dt_near (the farthest t3 may be from tr and still be
+    ** taken), plus the contact distance, the vertex misses the piece at t3
+    ** as at tr (contact's extent test): no event, and no long double
+    ** solve.  A vertex crosses the lines of most pieces of a convex
+    ** polygon far from them: on an ellipse of 5000 vertices (bin/wskel-gen
+    ** convex --n 5000) 8.3 million solves, a fifth of the variant's time.
+    ** Not for the shared-end pairs, where tr may be far from the time
+    ** taken (shared_end_root). */
+    if (a != V->next && A->next != V->prev) {
+        const df_vertex *B = &D->v[A->next];
+        double tq = tr < t ? t : tr > t1 ? t1 : tr;
+        wk_point q = df_pos(V, tq), qa = df_pos(A, tq), qb = df_pos(B, tq);
+        double s = L->ux * (q.x - qa.x) + L->uy * (q.y - qa.y);
+        double len = L->ux * (qb.x - qa.x) + L->uy * (qb.y - qa.y);
+        double move = fabs(V->v.x) + fabs(V->v.y) + fabs(A->v.x) + fabs(A->v.y) + fabs(B->v.x) +
+                      fabs(B->v.y);
+        double M = 2 * (eps_c + move * D->dt_near);
+        if (s < -M || s > len + M) return WK_OK;
+    }
     if (g0 > 0 && df_three_lines_meet(D, V->ein, V->eout, A->eout, &m, &t3) && t3 >= t &&
         t3 <= t1 && near_root(D, t3, tr))
         return contact(D, p, a, t, t1, t3, &m, eps_c, DF_PENETRATION);
+    double tc = shared_end_root(D, p, a, t, tr, rate);
+    if (tc != tr) {
+        if (tc > t1) return WK_OK; /* the collapse after the search's end: a later window's */
+        tr = tc;
+    }
     return contact(D, p, a, t, t1, tr, NULL, eps_c, DF_PENETRATION);
 }
 
