@@ -95,7 +95,12 @@
 ** computed), and pushes the pair's event when the crossing x lies in that
 ** cell (so each pair once), unless the listed one has already crashed
 ** before x (len < d - eps_d: the event would be a no-op whenever it came,
-** as a crash length is final).  A pair that meets at x is listed in x's
+** as a crash length is final), or x lies more than 2 eps_d beyond the
+** crash bound of either: the distance of a "sure" crash of that
+** motorcycle found by any earlier pair test (into a crashed trace that
+** reached the crossing more than eps_t earlier, not at its wall point: the
+** sequential rule crashes it there if nothing did before), so its trace
+** ends no later.  A pair that meets at x is listed in x's
 ** cell by both before the event's time (the listing runs at least 3 eps_d
 ** ahead of any crash that could matter there), so no valid event is
 ** missed.  A cell keeps its motorcycles' ids in one array (the data a
@@ -121,14 +126,17 @@
 ** at 10^6).  The star and random families' needle notches send ~r/2 fast
 ** motorcycles radially into a hub at the centre; without the index K ~
 ** r^2 / 8 (star n = 10^5: 194M pairs, 20 s), with it K ~ r^1.5 (43M, 4.6 s
-** of which 1.3 s is the ray shooting).  What remains are crossings in the
-** hub's central cells, where lines of all directions meet, with the
-** extensions (to the cell's edge) of traces that crashed inside the cell:
-** of star n = 10^5's 19.6M line-in-disk pairs only 0.8M meet a trace
-** before its crash point.  Removing them needs the crashed traces clipped
-** inside the cell (a finer subdivision of the crowded cells, each indexed
-** as above: a quadtree alone does not help, tried, as the spokes are
-** dense along their whole length), not done.
+** of which 1.3 s is the ray shooting).  A crowded cell's scan also visits
+** its angle bins outwards from the new line's and skips a bin when every
+** crossing with its lines lies beyond the new motorcycle's crash bound
+** (two lines at distances h_i, h_j from a point P cross within
+** 2 max(h_i, h_j) / |sin D| of it; P the least-squares point of the cell's
+** lines, the hub): star 10^5 43M -> 21M pairs, the centre cell's 19.0M ->
+** 0.8M, the same graph (the hub's pairs were tested against the line
+** extensions of traces that crashed inside the cell: of its 19.6M
+** line-in-disk pairs only 0.8M met a trace before its crash point).  What
+** remains is the annulus: long near-radial traces listed in about sqrt(r)
+** cells each (r^1.5 listings), see the variant's README, Cost.
 ** wk_motorcycle_graph_build_brute tests all pairs up front.
 */
 #ifndef WK_MOTORCYCLE_GRAPH_H
