@@ -268,7 +268,7 @@ bool wk_ray_shoot_brute(const wk_polygon *P, double tol, wk_point o, wk_point u,
 ** tolerance: 16 KiB of stack cleared per shot, about 0.2 us, against the
 ** edge tests it saves).  256 entries collided on large stars, whose shots
 ** walk beside more than 256 long edges of consecutive ids: star 3*10^5
-** (133k shots), the shots were 33% of the motorcycle graph's CPU time
+** (133k shots), the shots were 33% of the CPU time of a finder's trace graph, M(P)
 ** (perf) with 256 entries, 11% with 1024 and 9% with 4096. */
 #define RAY_MEMO 4096u
 

@@ -185,7 +185,9 @@ class Deforming(unittest.TestCase):
     # contact that was an edge swap) is checked here.
     # square6.wpoly (a run of collinear edges) is answered since the collinear
     # rule takes the whole run, as the engine's.
-    FALLBACK_FILES = {"mono_snap_skips_wall.wpoly", "mono_snap_window.wpoly"}
+    # arr_headon_turned_needles (arrneedle's head-on reflex vertices, merged beside deform6/7):
+    # deforming hands it to the reference (its skeleton is then naive's); issue 14, not yet answered
+    FALLBACK_FILES = {"mono_snap_skips_wall.wpoly", "mono_snap_window.wpoly", "arr_headon_turned_needles.wpoly"}
 
     def test_degenerate_files_without_fallback(self):
         data = os.path.join(tl.DATA, "degenerate")
