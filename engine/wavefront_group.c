@@ -173,12 +173,17 @@ static wk_status add_cluster(wk_wavefront *W, wk_point p, uint32_t *k) {
     return new_cluster(W, p, WK_NONE, k);
 }
 
-/* The node of seed s: its own (plan_shields) or the node at its event
-** point. */
-static uint32_t seed_node(wk_wavefront *W, uint32_t s) {
+/* The node seed s has to itself (plan_shields), or WK_NONE. */
+static uint32_t own_node(const wk_wavefront *W, uint32_t s) {
     for (uint32_t k = 0; W->n_own && k < W->n_cl; k++)
         if (W->cl[k].own == s) return k;
-    return find_cluster(W, W->v[s].ev_p);
+    return WK_NONE;
+}
+
+/* The node of seed s: its own or the node at its event point. */
+static uint32_t seed_node(wk_wavefront *W, uint32_t s) {
+    uint32_t k = own_node(W, s);
+    return k != WK_NONE ? k : find_cluster(W, W->v[s].ev_p);
 }
 
 /* ----------------------------------------------------------- collect */
@@ -665,8 +670,8 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
             u->at = WK_NONE;
         }
         /* a seed with a node of its own arrives there, wherever it is now */
-        for (uint32_t k = 0; W->n_own && k < W->n_cl; k++)
-            if (W->cl[k].own == W->comp[i]) u->at = k;
+        uint32_t own = own_node(W, W->comp[i]);
+        if (own != WK_NONE) u->at = own;
     }
     /* a free vertex whose two neighbours arrive at the same node closes a
     ** triangle of zero size with it: it arrives too */
@@ -854,6 +859,14 @@ static wk_status plan_sub_pieces(wk_wavefront *W) {
     return WK_OK;
 }
 
+/* True if sub-piece a (between two nodes) and its opposite, sin_ab apart
+** in direction, bound a long thin sliver (tolerance.h,
+** WK_CANCEL_SLIVER_RADII). */
+static bool is_sliver(const wk_wavefront *W, const wk_wf_sub *a, double sin_ab) {
+    double len = sqrt(wf_dist2(W->cl[NODE_OF(a->from)].p, W->cl[NODE_OF(a->to)].p));
+    return len >= WK_CANCEL_SLIVER_RADII * W->eps_g && sin_ab * len <= 2 * W->eps_g;
+}
+
 /* Step 3b, cancellation: opposite sub-pieces between the same two nodes
 ** (parallel edges that met) leave an arc. */
 static wk_status plan_cancel(wk_wavefront *W) {
@@ -879,10 +892,8 @@ static wk_status plan_cancel(wk_wavefront *W) {
                 ** length (tolerance.h, WK_CANCEL_SLIVER_RADII). */
                 const wk_offset_line *La = &W->L[a->edge], *Lb = &W->L[b->edge];
                 double sin_ab = fabs(La->ux * Lb->uy - La->uy * Lb->ux);
-                double len = sqrt(wf_dist2(W->cl[NODE_OF(a->from)].p, W->cl[NODE_OF(a->to)].p));
-                bool sliver = len >= WK_CANCEL_SLIVER_RADII * W->eps_g && sin_ab * len <= 2 * W->eps_g;
                 if (a->edge != b->edge && (La->ux * Lb->ux + La->uy * Lb->uy > 0 ||
-                                           (sin_ab > WK_CANCEL_SIN && !sliver)))
+                                           (sin_ab > WK_CANCEL_SIN && !is_sliver(W, a, sin_ab))))
                     return WK_FAIL(R, WK_EALGO, W->P->name, 0,
                                    "wavefront: pieces of non-parallel edges %u and %u cancel between "
                                    "two nodes",
