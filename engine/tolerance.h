@@ -130,6 +130,14 @@
 ** this many eps_d of one line: the group resolution, working with nodes
 ** eps_d apart, can leave such a cycle up to a few hundred eps_d thin. */
 #define WK_FLAT_CYCLE_SLACK 1e3
+/* The zipper of a group (wavefront_group.c, zip_overlap) forces the next
+** vertex of two antiparallel chains meeting along a line only while the
+** chains' next points lie clearly apart, more than this many times the
+** arrival radius (or eps_g) from the node before: closer, the next round's
+** arrival and pinch tests (radius eps_g, ends within eps_g) could decide
+** otherwise than the zipper's simple picture, so the rounds take over
+** there.  4 keeps every such test's reach (eps_g and its rounding) out. */
+#define WK_ZIP_CLEAR 4.0
 /* A split of an input vertex onto a piece of an input edge within eps_d of
 ** an input vertex x at the piece's end passes x by (x does not arrive at the
 ** split's node; wavefront_group.c, plan_shields) when the cut lies inside the
