@@ -287,6 +287,26 @@ bool wf_made_end_passed(const wk_wavefront *W, const wk_wf_vertex *V, const wk_w
     return -s > bar;
 }
 
+/* True if X, the end of a piece that vertex V would meet at time t within
+** eps_d of X, was made at V's own node in the same group (same skeleton
+** node, same start time) and t lies within eps_t of that: the pairing at the
+** node put X's piece outside V's sector (it pairs pieces by their
+** directions), so the hit is the tolerance's picture of the node itself,
+** not an event.  Taken for a split, it rebuilt the same two vertices again
+** and again: two reflex vertices of two rings meeting head-on 1e-12 .. 1e-11
+** apart (weighted: a hole's apex above a notch's tip, or two holes' apexes)
+** are one group of their two splits (and the edge event that follows
+** within eps_t), which makes a reflex and a convex vertex at one node; the
+** reflex one, started at the group's first time, lies on the convex one's
+** line a few 1e-12 in front of it and "split" that piece eps_t later, at
+** the same node (exit 2, "no progress", test_near_touch.py --sweep 3000 cases 1080,
+** 1502, 1567, 1680, 2242, 2977; tests/data/holes/near_touch_sibling_*.wpoly).
+** In the exact order the reflex vertex comes into being only at the edge
+** event, already behind that line and moving away from it. */
+static bool wf_sibling_end(const wk_wavefront *W, const wk_wf_vertex *V, const wk_wf_vertex *X, double t) {
+    return V->t0 > 0 && X->t0 == V->t0 && X->node == V->node && t <= V->t0 + W->eps_t;
+}
+
 void wk_wf_split_begin(const wk_wavefront *W, uint32_t v, wk_wf_split_search *s) {
     s->v = v;
     s->t = W->v[v].ev_t;
@@ -353,6 +373,21 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
         ((sa <= W->eps_d && wf_made_end_passed(W, V, A, p, sa, t)) ||
          (sb <= W->eps_d && wf_made_end_passed(W, V, B, p, sb, t))))
         return;
+    if ((sa <= W->eps_d && wf_sibling_end(W, V, A, t)) || (sb <= W->eps_d && wf_sibling_end(W, V, B, t)))
+        return;
+    /* Not in front of the line (a hit now only by the tolerance): a split
+    ** that the group may resolve by pairing V's edges with each other, the
+    ** piece passing through, is none: V's sector does not hold the piece's
+    ** direction, it is behind the line.  Taken for a split, the group made
+    ** V again, the same candidate with it, for ever: three holes whose
+    ** apexes lie 1e-8 apart, weighted, turned (test_near_touch.py --sweep
+    ** 3000 case 1941): the reflex vertex an edge event made 7e-8 from a
+    ** vertex kept apart at an input-side node (gap_made) lay within eps_d
+    ** behind the line of that vertex's piece; exit 2 (no progress) at the
+    ** nominal tolerance, and the coarser retry's skeleton was not the one
+    ** of the gaps magnified 10 and 100 times (nor a finder's that never
+    ** offered the split; tests/data/holes/near_touch_split_pairs_through.wpoly). */
+    if (d0 <= 0 && wf_split_changes_nothing(W, V->ein, V->eout, A->eout)) return;
     if (t == s->t && s->a != WK_NONE && a > s->a) return; /* deterministic tie */
     refine(W, V, V->ein, V->eout, A->eout, &t, &p);
     s->t = t;

@@ -200,6 +200,12 @@ static double cw_turn(double a, double b) {
     return d;
 }
 
+bool wf_split_changes_nothing(const wk_wavefront *W, uint32_t ein, uint32_t eout, uint32_t e) {
+    double a = angle_of(&W->L[ein], true), b = angle_of(&W->L[e], true);
+    double to_eout = angle_of(&W->L[eout], false), to_e = angle_of(&W->L[e], false);
+    return cw_turn(a, to_eout) < cw_turn(a, to_e) || cw_turn(b, to_e) < cw_turn(b, to_eout);
+}
+
 static wk_point point_pos(const wk_wavefront *W, uint32_t pt, double t) {
     return IS_NODE(pt) ? W->cl[NODE_OF(pt)].p : wk_wf_pos(&W->v[pt], t);
 }

@@ -179,6 +179,13 @@ static inline bool wf_is_input_vertex(const wk_wavefront *W, uint32_t u) {
 ** approach L or W->input_sides is off. */
 int wf_input_cut_side(const wk_wavefront *W, uint32_t v, uint32_t x, const wk_offset_line *L, int end,
                       double t);
+/* wavefront_group.c: true if a vertex between edges ein and eout, cutting
+** a piece of edge e at a node where nothing else arrives, may be paired
+** back to itself by plan_pairs (each incoming piece continues with the
+** first outgoing one clockwise): ein's first is eout, or e's first is e
+** (it passes through), so in one order or the other the split changes
+** nothing. */
+bool wf_split_changes_nothing(const wk_wavefront *W, uint32_t ein, uint32_t eout, uint32_t e);
 wk_status wf_mark_fresh(wk_wavefront *W, uint32_t v);
 wk_status wf_push_u32(wk_run *R, uint32_t **a, uint32_t *n, uint32_t *cap, uint32_t x);
 

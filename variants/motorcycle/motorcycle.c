@@ -62,6 +62,7 @@
 #include "trace_grid.h"
 #include "event_queue.h"
 #include "wavefront.h"
+#include "ray_shoot.h"
 
 #include <math.h>
 #include <string.h>
@@ -130,6 +131,8 @@ typedef struct mc_state {
     bool fg_ready;       /* fg lists the current group's candidate pieces */
     double fg_move;      /* how far an end of a listed piece moves in
                             WK_RAY_RESHOOT_DELAY eps_t after the group */
+    uint32_t *contacts;  /* reflex input vertices in contact with another ring (find_contacts) */
+    uint32_t n_contacts, cap_contacts;
 } mc_state;
 
 /* ------------------------------------------------------------ geometry */
@@ -860,9 +863,7 @@ static bool escapes_alone(const mc_state *A, const wk_wavefront *W, uint32_t v) 
     return true;
 }
 
-static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
-    mc_state *A = ud;
-    if (!wk_wf_polygon(W)->pslg || !escapes_alone(A, W, v)) wk_wf_near_split(W, v);
+static void trace_split(mc_state *A, wk_wavefront *W, uint32_t v) {
     if (v >= A->cap_v || A->seg_of[v] == WK_NONE) {
         brute_split(W, v);
         return;
@@ -890,6 +891,76 @@ static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
     if (!(rate < 0)) return;
     double t = t0 + (gap > 0 ? gap : 0) / -rate;
     wk_wf_offer_split(W, v, t, wk_wf_position(W, v, t), S->pa, S->pb);
+}
+
+/* v's split of a piece at a contact vertex c (find_contacts; still
+** alive), by the reference's split test.  Two rings within eps_d of each
+** other at t = 0: c's traces and v's cross at the contact, where M(P)
+** resolves them at the tolerance, and c's piece that sweeps across v's
+** trace first is not the one v's F is on.  Two holes whose apexes lie
+** 3.7e-8 apart (eps_d 3.3e-7), unit weights: one apex met the other's
+** outgoing piece at t = 8.5e-8, where the reference's (and CGAL's) meets
+** its incoming piece at 9.7e-9; the skeleton was valid but not naive's
+** (test_near_touch.py --sweep 3000 cases 2790 and 1096,
+** tests/data/holes/near_touch_mc_contact_*.wpoly).  O(contacts) per call:
+** contacts are sub-tolerance gaps between rings, rare. */
+static void contact_splits(mc_state *A, wk_wavefront *W, uint32_t v) {
+    wk_wf_split_search s;
+    bool any = false;
+    for (uint32_t i = 0; i < A->n_contacts; i++) {
+        uint32_t c = A->contacts[i];
+        if (c == v || !wk_wf_alive(W, c)) continue;
+        if (!any) wk_wf_split_begin(W, v, &s);
+        any = true;
+        wk_wf_split_test(W, &s, wk_wf_prev(W, c));
+        wk_wf_split_test(W, &s, c);
+    }
+    if (any) wk_wf_split_offer(W, &s);
+}
+
+static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
+    mc_state *A = ud;
+    if (!wk_wf_polygon(W)->pslg || !escapes_alone(A, W, v)) wk_wf_near_split(W, v);
+    trace_split(A, W, v);
+    contact_splits(A, W, v);
+}
+
+/* Distance from point a to input edge e. */
+static double edge_distance(const wk_polygon *P, uint32_t e, wk_point a) {
+    wk_point p = P->p[e], q = P->p[wk_polygon_next(P, e)];
+    double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
+    double m = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
+    m = m < 0 ? 0 : m > 1 ? 1 : m;
+    return hypot(p.x + m * dx - a.x, p.y + m * dy - a.y);
+}
+
+/* The contacts (contact_splits): reflex input vertices within the ray
+** shooter's tol (eps_d) of an edge of another ring at t = 0.  Polygons with
+** holes only; the grid cell of v lists every edge within 2 tol of it. */
+static wk_status find_contacts(mc_state *A, wk_wavefront *W) {
+    wk_run *R = A->R;
+    const wk_polygon *P = wk_wf_polygon(W);
+    if (P->n_rings < 2 || P->pslg) return WK_OK;
+    wk_ray_shooter sh;
+    wk_status st = wk_ray_shooter_init(R, &sh, P);
+    const wk_seg_grid *G = &sh.G;
+    for (uint32_t v = 0; st == WK_OK && v < P->n; v++) {
+        if (!wk_wf_alive(W, v) || !wk_wf_reflex(W, v)) continue;
+        wk_point a = P->p[v];
+        uint32_t c = wk_seg_grid_row(G, a.y) * G->nx + wk_seg_grid_col(G, a.x);
+        for (uint32_t k = G->start[c]; k < G->start[c + 1]; k++) {
+            uint32_t e = G->items[k];
+            if (wk_polygon_ring(P, e) == wk_polygon_ring(P, v) || !(edge_distance(P, e, a) <= sh.tol)) continue;
+            if (WK_GROW(R, A->contacts, A->cap_contacts, A->n_contacts + 1) != WK_OK) {
+                st = R->err.code;
+                break;
+            }
+            A->contacts[A->n_contacts++] = v;
+            break;
+        }
+    }
+    wk_ray_shooter_clear(R, &sh);
+    return st;
 }
 
 static void mc_incremental(void *ud, wk_wavefront *W, uint32_t v) { mc_full(ud, W, v); }
@@ -947,6 +1018,7 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     wk_run *R = A->R;
     const wk_polygon *P = wk_wf_polygon(W);
     if (ensure_vertex_arrays(A, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
+    if (find_contacts(A, W) != WK_OK) return R->err.code;
     wk_motorcycle_graph *G = NULL;
     double t0 = wk_phase_begin(); /* M(P): the variant's timed phase */
     wk_status st = wk_motorcycle_graph_build(R, P, &G);
@@ -1133,6 +1205,19 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
     const uint32_t *fresh, *ended;
     uint32_t n_fresh, n_ended;
     wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    /* A contact vertex's piece changed (c or its predecessor made or
+    ** relinked by the group): every reflex vertex's candidate may change
+    ** (contact_splits), and the engine refreshes only the vertices the group
+    ** touched.  Rare: contacts are sub-tolerance gaps between rings. */
+    bool contact_changed = false;
+    for (uint32_t i = 0; i < A->n_contacts && !contact_changed; i++) {
+        uint32_t c = A->contacts[i];
+        if (!wk_wf_alive(W, c)) continue;
+        for (uint32_t j = 0; j < n_fresh && !contact_changed; j++)
+            contact_changed = fresh[j] == c || fresh[j] == wk_wf_prev(W, c);
+    }
+    for (uint32_t v = 0; contact_changed && v < wk_wf_vertex_count(W); v++)
+        if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && wk_wf_reschedule(W, v) != WK_OK) return R->err.code;
     if (A->fg_ready) mc_tg_clear(R, &A->fg);
     A->fg_ready = false;
     A->stamp++;
@@ -1626,6 +1711,7 @@ static void mc_clear(mc_state *Ap) {
     WK_FREE_ARRAY(R, A.unknown, A.cap_unknown);
     WK_FREE_ARRAY(R, A.held, A.cap_held);
     WK_FREE_ARRAY(R, A.bt, A.cap_bt);
+    WK_FREE_ARRAY(R, A.contacts, A.cap_contacts);
     if (A.cap_v) {
         WK_FREE_ARRAY(R, A.seg_of, A.cap_v);
         WK_FREE_ARRAY(R, A.fhead, A.cap_v);
