@@ -72,11 +72,11 @@ KNOWN_GENERATED = {}
 # head-on) agree since motorcycle cuts both traces (motorcycle.c, headon).
 # A file here fails only in the way named (a listed file that passes, or fails otherwise, fails the test).
 KNOWN_FILES = {
-    # A cut of Australia's outer ring (motorcycle's head-on, motorcycle.c): after the head-on vertex
-    # event the vertex between edges 1 and 9 (parallel up to 7e-5 rad) runs fast along their bisector;
-    # naive (and motorcycle, arrangement: the same kinetic engine) starts it at the event node, 1.2e-8
-    # off edge 9's offset line, and meets edge 10 there (node 8.7e-9 off line 9: the whole ring's
-    # naive max distance error), deforming at the exact triple point 2.4e-4 away: both pass --check.
+    # A cut of Australia's outer ring (motorcycle's head-on, motorcycle.c): the node of faces 1, 9, 10
+    # after the head-on: naive's (motorcycle and arrangement agree with it) lies 8.7e-9 off edge 9's
+    # offset line (the whole ring's naive max distance error), deforming's on all three lines, 2.4e-4
+    # away: lines 1 and 9 are parallel up to 5e-5 rad, so such an offset moves a node on their
+    # bisector by about 1e-4.  Both pass --check.
     "mc_real_needle_passes_reflex.wpoly": "deforming differs from naive",
 }
 DATA = os.path.join(tl.DATA, "degenerate")
