@@ -1501,6 +1501,51 @@ static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t)
     return lx > lv - wk_wf_eps_d(W) && (!isfinite(lf) || lx < lf - wk_wf_eps_d(W));
 }
 
+/* Head-on: v (trace si) reaches X (at ls on si) where v' (trace sj) is now
+** too, within eps_d: v may split one of v''s pieces as well, as the
+** reference's search finds it (one group, both seeded), so si is cut at X
+** onto the piece of v' that the reference's split test picks, among those
+** whose crossing with si closes in on v (headon_piece; the far piece, v''s
+** other one, sweeps si on beyond X when its crossing moves away from v).
+** The arrangement variant's rule (finder.c, head-on), for the same reason:
+** the two front events are due at the same time only up to rounding, the
+** first cut sj alone and v ran on through v'.  Found on a real ring
+** (Australia's outer ring, @geo-maps/countries-land-1m: a needle tip of
+** speed 12 passes a reflex vertex 1.2e-8 apart at t = 3.2e-5, eps_d 5e-8;
+** tests/data/degenerate/mc_real_needle_passes_reflex.wpoly) and on the turned H with
+** needles (tests/data/degenerate/arr_headon_turned_needles*.wpoly).  Not
+** for neighbours: two adjacent reflex vertices at one crossing are the edge
+** event of the piece between them. */
+static wk_status headon(mc_state *A, wk_wavefront *W, uint32_t si, uint32_t sj, double ls,
+                        double t) {
+    const mc_seg *S = &A->s[si], *T = &A->s[sj];
+    if (S->v == WK_NONE || T->v == WK_NONE || !wk_wf_alive(W, S->v) || !wk_wf_alive(W, T->v))
+        return WK_OK;
+    if (T->v == wk_wf_next(W, S->v) || T->v == wk_wf_prev(W, S->v)) return WK_OK;
+    double eps = wk_wf_eps_d(W);
+    wk_point X = {S->o.x + ls * S->u.x, S->o.y + ls * S->u.y};
+    if (!(fabs(lambda_of(T, X) - lambda_v(W, T, t)) <= eps) || !unswept(W, S, ls, t)) return WK_OK;
+    uint32_t two[2] = {wk_wf_prev(W, T->v), T->v}, best = WK_NONE, far = WK_NONE;
+    double best_t = INFINITY, rate[2] = {NAN, NAN};
+    for (int c = 0; c < 2; c++) {
+        uint32_t a = two[c];
+        const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+        rate[c] = (lambda_on_line(S, L, t + 1) - lambda_on_line(S, L, t)) -
+                  (lambda_v(W, S, t + 1) - lambda_v(W, S, t));
+        if (a == S->v || wk_wf_next(W, a) == S->v) continue;
+        wk_wf_split_search q;
+        wk_wf_split_begin(W, S->v, &q);
+        wk_wf_split_test(W, &q, a);
+        if (q.a == WK_NONE || !(q.t < best_t) || !(rate[c] < 0)) continue;
+        best = a;
+        best_t = q.t;
+    }
+    if (best == WK_NONE) return WK_OK;
+    uint32_t other = best == two[0] ? 1 : 0;
+    if (rate[other] > 0) far = two[other];
+    return cut(A, W, si, best, ls, sj, far);
+}
+
 static wk_status mc_process_next(void *ud, wk_wavefront *W) {
     mc_state *A = ud;
     wk_run *R = A->R;
@@ -1623,6 +1668,8 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
                 if (pick != WK_NONE && rate[other] > 0) far = cand[other];
             }
             if (pick != WK_NONE && !own_piece(W, T, pick) && cut(A, W, sj, pick, lx, si, far) != WK_OK)
+                return R->err.code;
+            if (kind == MC_FRONT && !A->s[si].ghost && headon(A, W, si, sj, x.lam, t) != WK_OK)
                 return R->err.code;
         }
     }
