@@ -74,6 +74,10 @@ KNOWN_FILES = {
     # reflex vertex 2 where naive and arrangement meet them head-on (sub-tolerance: edges collinear up to rounding)
     "arr_headon_turned_needles.wpoly": "motorcycle differs from naive",
     "arr_headon_turned_needles_collinear.wpoly": "motorcycle differs from naive",
+    # stress s1-c00541-far (deform8): naive's (and arrangement's) node of faces 8, 44, 50 is
+    # 1.0e-5 from where those offset lines meet (80 digits on the input doubles); deforming's
+    # is at that point (tests/test_deforming.py, test_far_sliver_node_is_exact)
+    "deform_far_sliver_between_points.wpoly": "deforming differs from naive",
 }
 DATA = os.path.join(tl.DATA, "degenerate")
 # Kinds of skipped inputs (Tally.skip): counted and every one named in the
