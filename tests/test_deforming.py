@@ -185,9 +185,51 @@ class Deforming(unittest.TestCase):
     # contact that was an edge swap) is checked here.
     # square6.wpoly (a run of collinear edges) is answered since the collinear
     # rule takes the whole run, as the engine's.
-    # arr_headon_turned_needles (arrneedle's head-on reflex vertices, merged beside deform6/7):
-    # deforming hands it to the reference (its skeleton is then naive's); issue 14, not yet answered
-    FALLBACK_FILES = {"mono_snap_skips_wall.wpoly", "mono_snap_window.wpoly", "arr_headon_turned_needles.wpoly"}
+    # arr_headon_turned_needles (arrneedle's head-on reflex vertices) is
+    # answered since a penetration beyond its piece by a vertex that ends at
+    # another event cuts nothing (deform8; = naive, test_degenerate.py), as are
+    # deform_cross_late_reflex_arrives (stress s1-c01693) and
+    # deform_far_sliver_between_points (s1-c00541), see their comments.
+    # mono_snap_skips_wall and mono_snap_window still go to the reference:
+    # a vertex between edges 0.0014 rad apart, born 0.05 (eps_d) off their
+    # meeting line, is 12.5 units (250 eps_d) from the three-line point of
+    # its penetration, and the piece cut there gets rays that do not
+    # alternate ("two pieces leave an event point side by side").
+    FALLBACK_FILES = {"mono_snap_skips_wall.wpoly", "mono_snap_window.wpoly"}
+
+    def test_far_sliver_node_is_exact(self):
+        # stress s1-c00541-far (deform8): deforming answers it itself, and its
+        # node of faces 8, 44, 50 is where those offset lines meet, solved in
+        # 80 digits on the input as read (the doubles; the decimal text
+        # differs by up to half an ulp, and the node moves 3.4e-5 with it:
+        # the three lines nearly coincide along a direction), within 64 ulps
+        # of the coordinates (the stress sweep's tolerance).  Naive's node is
+        # 1.0e-5 from that point (KNOWN_FILES in test_degenerate.py).
+        from decimal import Decimal
+        import exact_nodes
+        path = os.path.join(tl.DATA, "degenerate", "deform_far_sliver_between_points.wpoly")
+        rc, got, err = self.deforming(path)
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(stat(got, "reference_fallbacks"), 0)
+        with open(path) as f:
+            rows = [ln.split() for ln in f if ln.strip() and not ln.startswith("#")]
+        n = int(rows[0][0])
+        pts = [(Decimal(float(r[0])), Decimal(float(r[1])), Decimal(r[2])) for r in rows[1:1 + n]]
+        cw = sum(pts[i][0] * pts[(i + 1) % n][1] - pts[(i + 1) % n][0] * pts[i][1]
+                 for i in range(n)) < 0
+        want = exact_nodes.meet(pts, cw, [8, 44, 50])
+        self.assertIsNotNone(want)
+        faces = {}
+        for a, b, left, right in got["arcs"]:
+            for v in (a, b):
+                faces.setdefault(v, set()).update((left, right))
+        at = [i for i, f in faces.items() if f == {8, 44, 50}]
+        self.assertEqual(len(at), 1, at)
+        x, y, t = got["nodes"][at[0]]
+        tol = 64 * 868643.25 * 2.0 ** -52
+        self.assertLessEqual(abs(Decimal(x) - want[0]), Decimal(tol), (x, y, t, want))
+        self.assertLessEqual(abs(Decimal(y) - want[1]), Decimal(tol), (x, y, t, want))
+        self.assertLessEqual(abs(Decimal(t) - want[2]), Decimal(tol), (x, y, t, want))
 
     def test_degenerate_files_without_fallback(self):
         data = os.path.join(tl.DATA, "degenerate")
@@ -206,6 +248,9 @@ class Deforming(unittest.TestCase):
                     else "the variant must answer it itself"))
         self.assertEqual(fails, [])
         self.assertIn("deform_star_spike_next_but_one.wpoly", names)
+        self.assertIn("deform_cross_late_reflex_arrives.wpoly", names)
+        self.assertIn("deform_far_sliver_between_points.wpoly", names)
+        self.assertIn("arr_headon_turned_needles.wpoly", names)
         self.assertGreaterEqual(len(names), 30)
 
     # ------------------------------------------- zero and negative weights

@@ -133,8 +133,8 @@ typedef struct df_state {
     uint32_t cap_head_piece, cap_head_path, cap_cell_mark, cap_cl, n_cl;
     df_entry *ent, *big_piece;
     uint32_t n_ent, cap_ent, n_big_piece, cap_big_piece;
-    uint32_t *big_path, *popped, *tl;
-    uint32_t n_big_path, cap_big_path, n_popped, cap_popped, n_tl, cap_tl;
+    uint32_t *big_path, *popped, *tl, *near;
+    uint32_t n_big_path, cap_big_path, n_popped, cap_popped, n_tl, cap_tl, n_near, cap_near;
 } df_state;
 
 /* x's links or life changed (resolve.c, df_add_vertex): the kinetic search
@@ -160,6 +160,10 @@ wk_status df_next_group(df_state *D, double *t_event);
 /* predict.c: after df_resolve: re-predict what it touched and what the
 ** group's search took off the queue, enter the new pieces and paths. */
 wk_status df_update(df_state *D);
+/* predict.c: the alive vertices whose paths in the open window pass
+** within r of X (into D->near, D->n_near; each once): the candidates of
+** resolve.c's arrivals. */
+wk_status df_vertices_near(df_state *D, wk_point X, double r);
 /* predict.c: free the search's arrays. */
 void df_predict_free(df_state *D);
 /* resolve.c: resolve every event of D->ev at time te (the corrector has

@@ -811,6 +811,36 @@ wk_status df_update(df_state *D) {
     return WK_OK;
 }
 
+wk_status df_vertices_near(df_state *D, wk_point X, double r) {
+    D->n_near = 0;
+    uint32_t gen = next_gen(D), i0, j0, i1, j1;
+    if (!cells(D, box_of(X), r, &i0, &j0, &i1, &j1)) { /* a box over DF_GRID_BIG cells: all */
+        for (uint32_t p = 0; p < D->nv; p++) {
+            if (!D->v[p].alive) continue;
+            if (WK_GROW(D->R, D->near, D->cap_near, D->n_near + 1) != WK_OK) return D->R->err.code;
+            D->near[D->n_near++] = p;
+        }
+        return WK_OK;
+    }
+    for (uint32_t j = j0; j <= j1; j++)
+        for (uint32_t i = i0; i <= i1; i++)
+            for (uint32_t e = D->head_path[j * D->g + i]; e != WK_NONE; e = D->ent[e].next) {
+                uint32_t p = D->ent[e].item;
+                if (!D->v[p].alive || D->k[p].stamp == gen) continue;
+                D->k[p].stamp = gen;
+                if (WK_GROW(D->R, D->near, D->cap_near, D->n_near + 1) != WK_OK) return D->R->err.code;
+                D->near[D->n_near++] = p;
+            }
+    for (uint32_t q = 0; q < D->n_big_path; q++) {
+        uint32_t p = D->big_path[q];
+        if (!D->v[p].alive || D->k[p].stamp == gen) continue;
+        D->k[p].stamp = gen;
+        if (WK_GROW(D->R, D->near, D->cap_near, D->n_near + 1) != WK_OK) return D->R->err.code;
+        D->near[D->n_near++] = p;
+    }
+    return WK_OK;
+}
+
 void df_predict_free(df_state *D) {
     wk_run *R = D->R;
     wk_event_queue_clear(R, &D->Q);
@@ -823,4 +853,5 @@ void df_predict_free(df_state *D) {
     WK_FREE_ARRAY(R, D->big_path, D->cap_big_path);
     WK_FREE_ARRAY(R, D->popped, D->cap_popped);
     WK_FREE_ARRAY(R, D->tl, D->cap_tl);
+    WK_FREE_ARRAY(R, D->near, D->cap_near);
 }

@@ -81,6 +81,7 @@ typedef struct df_ray {
     uint32_t far_ray;    /* else the ray at the other end's event point */
     uint32_t newv;
     uint32_t first;      /* sorts first among rays of one direction */
+    uint32_t far_k;      /* the event point at the other end (far_ray's), or WK_NONE */
 } df_ray;
 
 struct df_resolve_scratch {
@@ -212,7 +213,7 @@ static wk_status add_ray(df_state *D, uint32_t k, uint32_t edge, uint32_t out, u
     ** ray's direction (dy, -dx): -w n . (dy, -dx) dt */
     double lateral = -L->w * (L->nx * dy - L->ny * dx) + 0.0;
     S->rays[S->n_r] =
-        (df_ray){atan2(dy, dx), lateral, k, edge, out, far_vertex, WK_NONE, WK_NONE, out};
+        (df_ray){atan2(dy, dx), lateral, k, edge, out, far_vertex, WK_NONE, WK_NONE, out, WK_NONE};
     *id = S->n_r++;
     return WK_OK;
 }
@@ -576,6 +577,41 @@ static bool passed_by(const df_state *D, uint32_t a, int end, double te) {
     return false;
 }
 
+/* The vertex of event i is the vertex of another event of the group (a
+** collapse of one of its pieces, another penetration): it ends in this
+** resolution whatever this event is. */
+static bool ends_elsewhere(const df_state *D, uint32_t i) {
+    uint32_t p = D->ev[i].a;
+    for (uint32_t j = 0; j < D->n_ev; j++) {
+        const df_event *F = &D->ev[j];
+        if (j == i) continue;
+        if (F->a == p || (F->kind == DF_COLLAPSE && D->v[F->a].next == p)) return true;
+    }
+    return false;
+}
+
+/* X lies beyond an end of the piece a -> next(a) at te by more than eps_c. */
+static bool outside_piece(const df_state *D, uint32_t a, wk_point X, double te, double eps_c) {
+    const df_vertex *A = &D->v[a];
+    const wk_offset_line *L = &D->L[A->eout];
+    wk_point pa = df_pos(A, te), pb = df_pos(&D->v[A->next], te);
+    double s = (X.x - pa.x) * L->ux + (X.y - pa.y) * L->uy;
+    double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
+    return s < -eps_c || s > len + eps_c;
+}
+
+/* x is an end of a piece cut at event point k that passed_by keeps apart. */
+static bool end_passed_by(const df_state *D, uint32_t x, uint32_t k, double te) {
+    struct df_resolve_scratch *S = D->rs;
+    for (uint32_t i = 0; i < S->n_split; i += 2) {
+        uint32_t a = S->split[i];
+        if (find(S, S->split[i + 1]) != find(S, k)) continue;
+        if ((a == x && passed_by(D, a, 0, te)) || (D->v[a].next == x && passed_by(D, a, 1, te)))
+            return true;
+    }
+    return false;
+}
+
 /* Where event E happens at te. */
 static wk_point event_point(const df_state *D, const df_event *E, double te) {
     if (E->at_x) return E->x;
@@ -724,6 +760,24 @@ static wk_status resolve(df_state *D, double te) {
             if (add_member(D, E->a, k) != WK_OK ||
                 (end != WK_NONE && add_member(D, end, k) != WK_OK))
                 return R->err.code;
+            /* A penetration whose point lies beyond its piece by more than
+            ** the contact distance, by a vertex that ends at another event
+            ** of the group anyway, cuts nothing: its vertex meets the
+            ** piece's line only later (within eps_t: a fast vertex moves
+            ** far in it), where the piece no longer is.  Cut there (the cut
+            ** clamped to the piece's end), the piece got rays from a point
+            ** it does not reach: in the turned H with needles a reflex
+            ** vertex of speed 1e6, ending where its own piece collapses,
+            ** "penetrated" a piece 1.2 units beyond that piece's end
+            ** 1e-6 later, and two pieces left the point side by side (the
+            ** reference; tests/data/degenerate/arr_headon_turned_needles.wpoly).
+            ** A vertex with no other event keeps its cut: the vertex
+            ** between lines 0.0014 rad apart that is 12 units from its
+            ** three-line point (mono_snap_*.wpoly) is left to the
+            ** reference, as before, rather than resolved unlike naive. */
+            if (E->kind == DF_PENETRATION && outside_piece(D, E->b, X, te, eps_c) &&
+                ends_elsewhere(D, i))
+                continue;
             S->ckind[k] |= E->kind == DF_MERGE ? DF_POINT_MERGE : DF_POINT_SPLIT;
             if (WK_GROW(R, S->split, S->cap_split, S->n_split + 2) != WK_OK) return R->err.code;
             S->split[S->n_split++] = E->b;
@@ -763,6 +817,35 @@ static wk_status resolve(df_state *D, double te) {
                     return R->err.code;
         }
     }
+    /* Arrivals, as the engine's (plan_arrivals: every vertex of the
+    ** touched cycles within tolerance of a node arrives there): any alive
+    ** vertex within reach of an event point (the candidates: the paths in
+    ** the window's grid near it) is a member, not only the events'
+    ** vertices and their neighbours.  In a cross whose arms are 1 wide,
+    ** a nearly straight vertex (2.4e-11 off its edge) turns an arm's side
+    ** by 2.4e-11, and three of the four reflex vertices meet at the centre
+    ** 2e-11 (5 eps_t) before the fourth, which is then 2.8e-11 (0.007
+    ** eps_d) from the point but no neighbour of a member: left alive, its
+    ** pieces passed through the point, a new vertex there ran along the
+    ** wrong pair of edges and a node came out at t = 1.5 where the cross
+    ** vanishes at 0.5 (the validator, the reference; stress
+    ** s1-c01693-nearly_straight,
+    ** tests/data/degenerate/deform_cross_late_reflex_arrives.wpoly).
+    ** Not the vertices born at te (they came out of an event point
+    ** resolved at this time: their events are the predictor's), nor an
+    ** end of a cut piece that passed_by keeps apart (holes nearly
+    ** touching, as in the loop above); shields hold (add_member). */
+    for (uint32_t k = 0; k < S->n_cl; k++) {
+        if (find(S, k) != k) continue;
+        if (df_vertices_near(D, S->cx[k], eps_c) != WK_OK) return R->err.code;
+        for (uint32_t i = 0; i < D->n_near; i++) {
+            uint32_t x = D->near[i];
+            if (D->member[x] != WK_NONE || D->v[x].t0 == te ||
+                !within_reach(D, x, S->cx[k], te, eps_c, span) || end_passed_by(D, x, k, te))
+                continue;
+            if (add_member(D, x, k) != WK_OK) return R->err.code;
+        }
+    }
     /* 2. touched pieces and their rays */
     for (uint32_t i = 0; i < S->n_m + S->n_split / 2; i++) {
         uint32_t cand[2];
@@ -785,6 +868,8 @@ static wk_status resolve(df_state *D, double te) {
     /* 3. pairing; ray ids change with the sort, so far_ray is mapped */
     /* the kinds of the merged points go to their roots */
     for (uint32_t k = 0; k < S->n_cl; k++) S->ckind[find(S, k)] |= S->ckind[k];
+    for (uint32_t i = 0; i < S->n_r; i++)
+        if (S->rays[i].far_ray != WK_NONE) S->rays[i].far_k = S->rays[S->rays[i].far_ray].k;
     for (uint32_t i = 0; i < S->n_r; i++) {
         S->rays[i].newv = i; /* old id, for now */
         if (S->ckind[S->rays[i].k] == DF_POINT_MERGE) S->rays[i].first = !S->rays[i].out;
@@ -795,12 +880,25 @@ static wk_status resolve(df_state *D, double te) {
     /* Directions within WK_PARALLEL_SIN of each other are one (lines the
     ** engine calls parallel; their order is the rounding's): each run of
     ** them takes its first ray's angle and sorts again, by the lines'
-    ** offsets just before te (ray_cmp), as exactly parallel ones do. */
+    ** offsets just before te (ray_cmp), as exactly parallel ones do.  So
+    ** are two rays that run to the same event point within WK_CANCEL_SIN
+    ** (the engine's bar for opposite pieces that cancel between two
+    ** nodes): both lie along the one segment between the two points, a
+    ** sliver closing, whatever their lines' directions.  A rectilinear
+    ** polygon turned in doubles 1e6 from the origin (edges 1e-3 long,
+    ** coordinates rounded to 1.2e-10) has antiparallel edges 1.1e-8 apart
+    ** in direction; their pieces met along a stretch 1e-10 long between
+    ** two points, and sorted by their lines' angles an out-ray and an
+    ** in-ray there swapped: two pieces left a point side by side (the
+    ** reference; stress s1-c00541-far,
+    ** tests/data/degenerate/deform_far_sliver_between_points.wpoly). */
     bool runs = false;
     for (uint32_t i = 1; i < S->n_r; i++) {
         uint32_t j = i;
         while (j < S->n_r && S->rays[j].k == S->rays[i - 1].k &&
-               S->rays[j].angle - S->rays[i - 1].angle <= WK_PARALLEL_SIN) {
+               (S->rays[j].angle - S->rays[i - 1].angle <= WK_PARALLEL_SIN ||
+                (S->rays[j].far_k != WK_NONE && S->rays[j].far_k == S->rays[i - 1].far_k &&
+                 S->rays[j].angle - S->rays[i - 1].angle <= WK_CANCEL_SIN))) {
             runs |= S->rays[j].angle != S->rays[i - 1].angle;
             S->rays[j].angle = S->rays[i - 1].angle;
             j++;
