@@ -67,7 +67,7 @@ wk_status wk_validate_arc_ends(wk_run *R, const wk_polygon *P, const wk_skeleton
 ** arc between two later nodes is not checked: a node where nearly parallel
 ** lines meet is placed within tol of its lines but, by the tolerance
 ** policy, anywhere along them within eps_d / angle (tests/data/skeletons:
-** comb_spike.deforming.json, a node 173 units along two lines 3e-5 rad
+** comb_spike.*.json: a node 173 units along two lines 3e-5 rad
 ** apart, both ends within tol).  Unequal weights (the collinear rule's
 ** runs: the vertex there moves along the line), zero weights (walls meet
 ** at a point) and edges facing apart (n_e . n_f <= 0, where (c) already
