@@ -20,7 +20,10 @@
 **       positive inside (the wavefront of e reaches v at time t_v).  An arc
 **       between two input vertices joins adjacent ones and has the edge
 **       between them as a face: it traces that edge, swept at t = 0 by the
-**       collinear rule.
+**       collinear rule.  An arc leaving input vertex v between v's two
+**       edges, of equal weight and facing the same way, runs along the sum
+**       of their normals within 4 tol (wk_validate_arc_bisector: for nearly
+**       parallel edges the distances above leave its direction free).
 **   (d) tree: every node is on an arc, all nodes are connected, and with h
 **       holes exactly h arcs close a cycle (hence arcs == nodes - 1 + h; a
 **       tree without holes).  Why h: P with h holes has Euler
@@ -103,6 +106,7 @@
 ** sides to find candidate pairs; smaller ones test all pairs.
 */
 #include "faces.h"
+#include "validate_internal.h"
 
 #include <float.h>
 #include <math.h>
@@ -525,6 +529,7 @@ static wk_status check_arcs(wk_run *R, const wk_polygon *P, const wk_skeleton *S
                                i, c->a, c->b, c->left, c->right, v, nd->t, d, e, want, err, tol);
             if (err > *max_err) *max_err = err;
         }
+        if (wk_validate_arc_bisector(R, P, S, i, tol, P->name, "c") != WK_OK) return R->err.code;
         /* An arc between two input vertices traces an edge swept at t = 0:
         ** the vertices are adjacent and the edge between them is one of its
         ** faces.  Without this an arc spanning two swept edges of a

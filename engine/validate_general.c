@@ -88,7 +88,8 @@ wk_status wk_validate_general(wk_run *R, const wk_polygon *P, const wk_skeleton 
             return WK_FAIL(R, WK_EINVALID, P->name, 0,
                            "validate (general c): arc %u has faces %u, %u", i, c->left, c->right);
         if (wk_validate_arc_ends(R, P, S, i, H, tol, tol_t, P->name, "general c", "the height",
-                                 "plane", rep) != WK_OK)
+                                 "plane", rep) != WK_OK ||
+            wk_validate_arc_bisector(R, P, S, i, tol, P->name, "general c") != WK_OK)
             return R->err.code;
     }
     /* (d): incidences (face, node): both sides of every arc, the input edges */

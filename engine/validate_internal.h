@@ -1,7 +1,8 @@
 /*
 ** validate_internal.h: what the validators for capped roofs
 ** (validate_general.c) and for PSLGs (validate_pslg.c) share: stage (c),
-** every arc end on the offset lines of both of the arc's faces.
+** every arc end on the offset lines of both of the arc's faces, and each
+** arc from an input vertex along its bisector (validate.c too).
 */
 #ifndef WK_VALIDATE_INTERNAL_H
 #define WK_VALIDATE_INTERNAL_H
@@ -24,5 +25,13 @@ wk_status wk_validate_arc_ends(wk_run *R, const wk_polygon *P, const wk_skeleton
                                double T, double tol, double tol_t, const char *name,
                                const char *stage, const char *t_name, const char *line_name,
                                wk_validate_report *rep);
+
+/* For an arc leaving input vertex v between v's two edges, of equal nonzero
+** weight and facing the same way (inward normals n_e . n_f > 0): the arc's
+** displacement across n_e + n_f is at most 4 tol (validate_arc_ends.c says
+** why: for nearly parallel edges stage (c)'s distances do not pin the
+** arc's direction).  Polygons only (P's rings give v's edges). */
+wk_status wk_validate_arc_bisector(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                   uint32_t i, double tol, const char *name, const char *stage);
 
 #endif

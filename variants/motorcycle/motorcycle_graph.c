@@ -32,9 +32,20 @@
 
 /* Grid size: about this many cells per motorcycle.  Not a tolerance: a
 ** cost trade-off (fewer cells, more pairs tested per listing; more
-** cells, more listings per trace).  1 keeps both O(1) per cell crossed for
-** traces spread over the polygon. */
-#define MCG_CELLS_PER_MOTORCYCLE 1.0
+** cells, more listings per trace).  Measured (session mchub2, CPU time of
+** M(P), n = 10^5, seed 1): the cost of long traces was the listings, not
+** the pair tests: monotone 10^5 (its origins on a circle refine the grid
+** to 14 cells per motorcycle, traces cross the disc) listed 14.8M times,
+** each a heap event and cache misses, for 240M pair tests of only 644k
+** distinct pairs per 3*10^4 (near-parallel neighbours met again in every
+** cell they share); a per-motorcycle memo of tested pairs cut the tests
+** 50-fold and the time not at all.  Fewer, larger cells cut the listings,
+** and the crowded cells' line index (MCG_INDEX_MIN) keeps their scans
+** cheap: from 1 to 0.1, monotone 8.7 -> 3.8 s, star 3.2 -> 2.4 s, random
+** 3.0 -> 2.2 s, comb and rectilinear equal (0.08 s), coastline 0.26 ->
+** 0.30 s (its short traces near clustered origins like small cells; 0.03
+** made it 0.40 s for monotone 2.4 s). */
+#define MCG_CELLS_PER_MOTORCYCLE 0.1
 /* ... times up to MCG_REFINE_MAX when the motorcycles' origins are
 ** clustered: with origins in a fraction f of the cells of that grid (per
 ** motorcycle), MCG_REFINE_OCCUPANCY / f.  A fractal coastline's reflex
@@ -42,9 +53,9 @@
 ** 0.009 at 10^6) and its traces end close to their origins, so a finer
 ** grid cuts the pairs tested (coastline 10^6: 41.5M pairs and 11.5M queued
 ** events at 1 cell per motorcycle, 13.5M and 3.1M at 16); spread origins
-** (star and random: f = 0.34) keep 1, where a finer grid only lists the
-** long traces into the hub in more cells (star 10^5: 42.7M pairs at 1,
-** 89M at 16). */
+** (star and random: f = 0.34) keep the base size, where a finer grid only
+** lists the long traces into the hub in more cells (star 10^5: 42.7M pairs
+** at 1, 89M at 16). */
 #define MCG_REFINE_OCCUPANCY 0.25
 #define MCG_REFINE_MAX 16.0
 /* A cell listing this many motorcycles gets an index of their lines (and

@@ -85,8 +85,8 @@
 ** --------------------------------------
 ** Bounding segments from the ray shooter (expected O(1 + cells) per ray),
 ** then a time-ordered simulation over a uniform grid of about one cell per
-** motorcycle (up to 16 when the origins are clustered, see
-** MCG_REFINE_OCCUPANCY in the .c): each motorcycle lists itself in the cells within
+** ten motorcycles (up to 16 times more when the origins are clustered, see
+** MCG_CELLS_PER_MOTORCYCLE and MCG_REFINE_OCCUPANCY in the .c): each motorcycle lists itself in the cells within
 ** WK_MCG_GRID_DELTA * eps_d of its bounding segment, slab by slab along the
 ** segment's major axis, each slab at the time it comes within that distance
 ** (a registration event in the same heap); a motorcycle that has crashed
