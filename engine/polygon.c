@@ -891,6 +891,14 @@ void wk_polygon_bbox(const wk_polygon *P, wk_point *lo, wk_point *hi) {
     }
 }
 
+double wk_polygon_edge_distance(const wk_polygon *P, uint32_t e, wk_point a) {
+    wk_point p = P->p[e], q = P->p[wk_polygon_next(P, e)];
+    double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
+    double m = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
+    m = m < 0 ? 0 : m > 1 ? 1 : m;
+    return hypot(p.x + m * dx - a.x, p.y + m * dy - a.y);
+}
+
 double wk_polygon_scale(const wk_polygon *P) {
     wk_point lo, hi;
     wk_polygon_bbox(P, &lo, &hi);

@@ -400,6 +400,37 @@ void wk_wf_split_offer(wk_wavefront *W, const wk_wf_split_search *s) {
     wk_wf_offer_split(W, s->v, s->t, s->p, s->a, s->b);
 }
 
+wk_status wk_wf_reschedule_after_pieces_at(wk_wavefront *W, const uint32_t *vs, uint32_t n) {
+    const uint32_t *fresh, *ended;
+    uint32_t n_fresh, n_ended;
+    wk_wf_last_group(W, &fresh, &n_fresh, &ended, &n_ended);
+    bool changed = false;
+    for (uint32_t i = 0; i < n && !changed; i++) {
+        uint32_t c = vs[i];
+        if (!wk_wf_alive(W, c)) continue;
+        for (uint32_t j = 0; j < n_fresh && !changed; j++)
+            changed = fresh[j] == c || fresh[j] == wk_wf_prev(W, c);
+    }
+    for (uint32_t v = 0; changed && v < wk_wf_vertex_count(W); v++)
+        if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && wk_wf_reschedule(W, v) != WK_OK)
+            return W->R->err.code;
+    return WK_OK;
+}
+
+void wk_wf_split_at_vertices(wk_wavefront *W, uint32_t v, const uint32_t *vs, uint32_t n) {
+    wk_wf_split_search s;
+    bool any = false;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t c = vs[i];
+        if (c == v || !wk_wf_alive(W, c)) continue;
+        if (!any) wk_wf_split_begin(W, v, &s);
+        any = true;
+        wk_wf_split_test(W, &s, wk_wf_prev(W, c));
+        wk_wf_split_test(W, &s, c);
+    }
+    if (any) wk_wf_split_offer(W, &s);
+}
+
 static wk_status schedule(wk_wavefront *W, uint32_t vi) {
     wk_wf_vertex *V = &W->v[vi];
     double t = V->ev_t;

@@ -114,6 +114,18 @@ typedef struct wk_wf_split_search {
 void wk_wf_split_begin(const wk_wavefront *W, uint32_t v, wk_wf_split_search *s);
 void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a);
 void wk_wf_split_offer(wk_wavefront *W, const wk_wf_split_search *s);
+/* The search over both pieces at each alive vertex of vs[0..n) but v
+** itself, O(n): for finders whose own structure cannot see splits at
+** those vertices (contacts: vertices within eps_d of another ring at
+** t = 0, whose pieces sweep across other vertices' paths unseen). */
+void wk_wf_split_at_vertices(wk_wavefront *W, uint32_t v, const uint32_t *vs, uint32_t n);
+/* After a group (in the finder's after-group hook): when the group made or
+** relinked a piece at one of vs[0..n) (the vertex or its predecessor is
+** among the group's fresh vertices), reschedule every alive reflex vertex,
+** whose wk_wf_split_at_vertices answer may have changed; the engine
+** refreshes only the vertices the group touched.  O(n * fresh), and
+** O(vertices) when it fires: for rare vs (contacts). */
+wk_status wk_wf_reschedule_after_pieces_at(wk_wavefront *W, const uint32_t *vs, uint32_t n);
 /* The search over every piece of v's cycle, O(cycle): begin, test all, offer. */
 void wk_wf_split_scan(wk_wavefront *W, uint32_t v);
 /* The search over the pieces just beyond v's own two, walking on past each

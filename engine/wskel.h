@@ -651,6 +651,8 @@ wk_status wk_skeleton_merge_pass_through(wk_run *R, wk_skeleton *S);
 double wk_polygon_scale(const wk_polygon *P);
 /* The polygon's bounding box. */
 void wk_polygon_bbox(const wk_polygon *P, wk_point *lo, wk_point *hi);
+/* Euclidean distance from point a to input edge e (the closed segment). */
+double wk_polygon_edge_distance(const wk_polygon *P, uint32_t e, wk_point a);
 
 /* ------------------------------------------------------------ validator */
 

@@ -55,14 +55,6 @@ static void reflex_motion(const wk_polygon *P, uint32_t v, wk_aseg *g) {
     g->speed = speed;
 }
 
-/* Distance from point a to edge e of P. */
-static double edge_distance(const wk_polygon *P, uint32_t e, wk_point a) {
-    wk_point p = P->p[e], q = P->p[wk_polygon_next(P, e)];
-    double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
-    double m = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
-    m = m < 0 ? 0 : m > 1 ? 1 : m;
-    return hypot(p.x + m * dx - a.x, p.y + m * dy - a.y);
-}
 
 /* A ray that meets nothing: its origin, vertex v, lies within tol of an
 ** edge other than its own two (a tiny edge next to v: v's neighbour across
@@ -81,7 +73,7 @@ static bool hit_at_origin(const wk_polygon *P, double tol, uint32_t v, wk_point 
         if (e == v || e == prev) continue;
         uint32_t f = wk_polygon_next(P, e);
         wk_point p = P->p[e], q = P->p[f];
-        double d = edge_distance(P, e, a);
+        double d = wk_polygon_edge_distance(P, e, a);
         if (d <= tol && d < best) {
             best = d;
             bw = hypot(p.x - a.x, p.y - a.y) <= hypot(q.x - a.x, q.y - a.y) ? e : f;
@@ -132,7 +124,7 @@ static bool contact_at_origin(const wk_ray_shooter *sh, uint32_t v) {
     uint32_t c = wk_seg_grid_row(G, a.y) * G->nx + wk_seg_grid_col(G, a.x);
     for (uint32_t k = G->start[c]; k < G->start[c + 1]; k++) {
         uint32_t e = G->items[k];
-        if (e == v || e == prev || !(edge_distance(P, e, a) <= sh->tol)) continue;
+        if (e == v || e == prev || !(wk_polygon_edge_distance(P, e, a) <= sh->tol)) continue;
         if (!near_chain_edge(P, v, e, WK_ARR_NEAR_SLACK * sh->tol)) return true;
     }
     return false;

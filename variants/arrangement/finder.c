@@ -442,17 +442,7 @@ static void segment_split(ar_state *A, wk_wavefront *W, uint32_t v) {
 ** tests/data/holes/near_touch_arr_contact_sweeps.wpoly).  O(contacts) per
 ** call: contacts are sub-tolerance pinches of the input, and rare. */
 static void contact_splits(ar_state *A, wk_wavefront *W, uint32_t v) {
-    wk_wf_split_search s;
-    bool any = false;
-    for (uint32_t i = 0; i < A->n_contacts; i++) {
-        uint32_t c = A->contacts[i];
-        if (c == v || !wk_wf_alive(W, c)) continue;
-        if (!any) wk_wf_split_begin(W, v, &s);
-        any = true;
-        wk_wf_split_test(W, &s, wk_wf_prev(W, c));
-        wk_wf_split_test(W, &s, c);
-    }
-    if (any) wk_wf_split_offer(W, &s);
+    wk_wf_split_at_vertices(W, v, A->contacts, A->n_contacts);
 }
 
 /* v's split: v meets F along its segment; any contact next to v
@@ -591,15 +581,7 @@ static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
     ** relinked by the group): every reflex vertex's candidate may change
     ** (contact_splits), and the engine refreshes only the vertices the group
     ** touched.  Rare: contact vertices are sub-tolerance pinches. */
-    bool contact_changed = false;
-    for (uint32_t i = 0; i < A->n_contacts && !contact_changed; i++) {
-        uint32_t c = A->contacts[i];
-        if (!wk_wf_alive(W, c)) continue;
-        for (uint32_t j = 0; j < n_fresh && !contact_changed; j++)
-            contact_changed = fresh[j] == c || fresh[j] == wk_wf_prev(W, c);
-    }
-    for (uint32_t v = 0; contact_changed && v < wk_wf_vertex_count(W); v++)
-        if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && wk_wf_reschedule(W, v) != WK_OK) return R->err.code;
+    if (wk_wf_reschedule_after_pieces_at(W, A->contacts, A->n_contacts) != WK_OK) return R->err.code;
     /* new reflex vertices get a segment */
     for (uint32_t i = 0; i < n_fresh; i++) {
         uint32_t v = fresh[i];

@@ -905,17 +905,7 @@ static void trace_split(mc_state *A, wk_wavefront *W, uint32_t v) {
 ** tests/data/holes/near_touch_mc_contact_*.wpoly).  O(contacts) per call:
 ** contacts are sub-tolerance gaps between rings, rare. */
 static void contact_splits(mc_state *A, wk_wavefront *W, uint32_t v) {
-    wk_wf_split_search s;
-    bool any = false;
-    for (uint32_t i = 0; i < A->n_contacts; i++) {
-        uint32_t c = A->contacts[i];
-        if (c == v || !wk_wf_alive(W, c)) continue;
-        if (!any) wk_wf_split_begin(W, v, &s);
-        any = true;
-        wk_wf_split_test(W, &s, wk_wf_prev(W, c));
-        wk_wf_split_test(W, &s, c);
-    }
-    if (any) wk_wf_split_offer(W, &s);
+    wk_wf_split_at_vertices(W, v, A->contacts, A->n_contacts);
 }
 
 static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
@@ -925,14 +915,6 @@ static void mc_full(void *ud, wk_wavefront *W, uint32_t v) {
     contact_splits(A, W, v);
 }
 
-/* Distance from point a to input edge e. */
-static double edge_distance(const wk_polygon *P, uint32_t e, wk_point a) {
-    wk_point p = P->p[e], q = P->p[wk_polygon_next(P, e)];
-    double dx = q.x - p.x, dy = q.y - p.y, l2 = dx * dx + dy * dy;
-    double m = l2 > 0 ? ((a.x - p.x) * dx + (a.y - p.y) * dy) / l2 : 0;
-    m = m < 0 ? 0 : m > 1 ? 1 : m;
-    return hypot(p.x + m * dx - a.x, p.y + m * dy - a.y);
-}
 
 /* The contacts (contact_splits): reflex input vertices within the ray
 ** shooter's tol (eps_d) of an edge of another ring at t = 0.  Polygons with
@@ -950,7 +932,9 @@ static wk_status find_contacts(mc_state *A, wk_wavefront *W) {
         uint32_t c = wk_seg_grid_row(G, a.y) * G->nx + wk_seg_grid_col(G, a.x);
         for (uint32_t k = G->start[c]; k < G->start[c + 1]; k++) {
             uint32_t e = G->items[k];
-            if (wk_polygon_ring(P, e) == wk_polygon_ring(P, v) || !(edge_distance(P, e, a) <= sh.tol)) continue;
+            if (wk_polygon_ring(P, e) == wk_polygon_ring(P, v) ||
+                !(wk_polygon_edge_distance(P, e, a) <= sh.tol))
+                continue;
             if (WK_GROW(R, A->contacts, A->cap_contacts, A->n_contacts + 1) != WK_OK) {
                 st = R->err.code;
                 break;
@@ -1209,15 +1193,7 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
     ** relinked by the group): every reflex vertex's candidate may change
     ** (contact_splits), and the engine refreshes only the vertices the group
     ** touched.  Rare: contacts are sub-tolerance gaps between rings. */
-    bool contact_changed = false;
-    for (uint32_t i = 0; i < A->n_contacts && !contact_changed; i++) {
-        uint32_t c = A->contacts[i];
-        if (!wk_wf_alive(W, c)) continue;
-        for (uint32_t j = 0; j < n_fresh && !contact_changed; j++)
-            contact_changed = fresh[j] == c || fresh[j] == wk_wf_prev(W, c);
-    }
-    for (uint32_t v = 0; contact_changed && v < wk_wf_vertex_count(W); v++)
-        if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && wk_wf_reschedule(W, v) != WK_OK) return R->err.code;
+    if (wk_wf_reschedule_after_pieces_at(W, A->contacts, A->n_contacts) != WK_OK) return R->err.code;
     if (A->fg_ready) mc_tg_clear(R, &A->fg);
     A->fg_ready = false;
     A->stamp++;
