@@ -1367,6 +1367,20 @@ static wk_status spawn_far(mc_state *A, wk_wavefront *W, uint32_t sj, double lam
         if (O->xf.other == sj && fabs(O->xf.lam - lo) <= slack) O->xf.other = g;
     }
     A->s[sj].nx = keep;
+    /* Give the moved tail's room back.  The entries went to the ghost, but
+    ** sj kept its capacity: on monotone 10^5 (seed 1) the crossing lists
+    ** held 4.4M entries in room for 11.0M (176 MB of the 313 MB peak), the
+    ** room of the 2.8M moved entries counted twice.  Shrinking a block
+    ** (libc realloc) does not fail in practice; if it does, the run fails
+    ** with WK_ENOMEM as for any refused request. */
+    if (A->s[sj].capx > keep) {
+        mc_seg *J = &A->s[sj];
+        mc_cross *nxp = wk_realloc(A->R, J->x, (size_t)J->capx * sizeof *J->x,
+                                   (size_t)keep * sizeof *J->x);
+        if (keep > 0 && !nxp) return A->R->err.code;
+        J->x = nxp;
+        J->capx = keep;
+    }
     G = &A->s[g];
     double lf = lambda_f(W, G, t);
     G->xf = G->pa != WK_NONE && isfinite(lf) ? next_down(G, lf, WK_NONE) : NO_CROSS;
