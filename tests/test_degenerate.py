@@ -69,15 +69,13 @@ KNOWN_GENERATED = {}
 # deforming applies the engine's slow-stretch rule (resolve.c,
 # plan_slow_stretches); arr_headon_turned_needles*.wpoly (motorcycle let
 # reflex vertex 9 run on through reflex vertex 2 where naive meets them
-# head-on) agree since motorcycle cuts both traces (motorcycle.c, headon).
+# head-on) agree since motorcycle cuts both traces (motorcycle.c, headon);
+# mc_real_needle_passes_reflex.wpoly (deforming's node of faces 1, 9, 10 on
+# all three lines, 2.4e-4 from naive's; lines 1 and 9 parallel to 5e-5 rad)
+# agrees since deforming takes a three-line point only within the contact
+# distance of the vertex (deform9, predict.c test_penetration).
 # A file here fails only in the way named (a listed file that passes, or fails otherwise, fails the test).
 KNOWN_FILES = {
-    # A cut of Australia's outer ring (motorcycle's head-on, motorcycle.c): the node of faces 1, 9, 10
-    # after the head-on: naive's (motorcycle and arrangement agree with it) lies 8.7e-9 off edge 9's
-    # offset line (the whole ring's naive max distance error), deforming's on all three lines, 2.4e-4
-    # away: lines 1 and 9 are parallel up to 5e-5 rad, so such an offset moves a node on their
-    # bisector by about 1e-4.  Both pass --check.
-    "mc_real_needle_passes_reflex.wpoly": "deforming differs from naive",
     # stress s1-c00541-far (deform8): naive's (and arrangement's) node of faces 8, 44, 50 is
     # 1.0e-5 from where those offset lines meet (80 digits on the input doubles); deforming's
     # is at that point (tests/test_deforming.py, test_far_sliver_node_is_exact)

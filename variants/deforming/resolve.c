@@ -771,10 +771,10 @@ static wk_status resolve(df_state *D, double te) {
             ** "penetrated" a piece 1.2 units beyond that piece's end
             ** 1e-6 later, and two pieces left the point side by side (the
             ** reference; tests/data/degenerate/arr_headon_turned_needles.wpoly).
-            ** A vertex with no other event keeps its cut: the vertex
-            ** between lines 0.0014 rad apart that is 12 units from its
-            ** three-line point (mono_snap_*.wpoly) is left to the
-            ** reference, as before, rather than resolved unlike naive. */
+            ** A vertex with no other event keeps its cut (the vertex
+            ** between lines 0.0014 rad apart that was 12 units from its
+            ** three-line point, mono_snap_*.wpoly, no longer takes that
+            ** point: predict.c, test_penetration). */
             if (E->kind == DF_PENETRATION && outside_piece(D, E->b, X, te, eps_c) &&
                 ends_elsewhere(D, i))
                 continue;
