@@ -124,6 +124,8 @@ typedef struct mc_state {
     uint32_t n_unknown, cap_unknown;
     double guard_t;
     uint64_t guard_n;
+    double cut_t;        /* cut's budget: the instant counted, and the cuts in it */
+    uint64_t cut_n;
     mc_piece_grid pg;    /* ray shots (piece_grid.h) */
     mc_trace_grid tg;    /* traces by place, built at the first list_crossings */
     double tg_pad;       /* each part is indexed this much longer at both ends */
@@ -1393,6 +1395,20 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
                      uint32_t far) {
     mc_seg *T = &A->s[sj];
     double t = wk_wf_now(W);
+    /* No progress: cuts at one instant beyond 16 per trace and vertex (the
+    ** bound process_next keeps on events) end the run with exit 2, not a
+    ** hang.  A fuzz finding (tests/data/fuzz/ealgo_motorcycle_cut_storm.wpoly,
+    ** a monotone 48-gon with a vertex pulled 1.8e12 down): the traces
+    ** through one crossing re-cut each other without end inside a single
+    ** event, so the events' own bound never saw it.  The cause is not
+    ** found yet (issue 13). */
+    A->cut_n = t == A->cut_t ? A->cut_n + 1 : 0;
+    A->cut_t = t;
+    if (A->cut_n > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024)
+        return WK_FAIL(A->R, WK_EALGO, wk_wf_polygon(W)->name, 0,
+                       "motorcycle: no progress at t = %.17g (traces cut again and again at one "
+                       "crossing)",
+                       t);
     /* The part of s' beyond X is no longer reached from v': if a piece
     ** sweeps it on (far) and it guards traces, it lives on as a ghost; else
     ** its guards go. */
