@@ -1390,6 +1390,16 @@ static wk_status spawn_far(mc_state *A, wk_wavefront *W, uint32_t sj, double lam
     return schedule_seg(A, W, g);
 }
 
+/* The no-progress bound shared by the event loop and cut: *count steps at
+** the instant *at; more than 16 per trace and vertex at one instant means
+** the run repeats itself (exit 2 instead of a hang). */
+static bool over_budget(const mc_state *A, const wk_wavefront *W, double *at, uint64_t *count) {
+    double t = wk_wf_now(W);
+    *count = t == *at ? *count + 1 : 0;
+    *at = t;
+    return *count > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024;
+}
+
 /* Cut s' at lam (a crossing X): F' := X on piece a. */
 static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, double lam, uint32_t via,
                      uint32_t far) {
@@ -1402,9 +1412,7 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     ** through one crossing re-cut each other without end inside a single
     ** event, so the events' own bound never saw it.  The cause is not
     ** found yet (issue 13). */
-    A->cut_n = t == A->cut_t ? A->cut_n + 1 : 0;
-    A->cut_t = t;
-    if (A->cut_n > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024)
+    if (over_budget(A, W, &A->cut_t, &A->cut_n))
         return WK_FAIL(A->R, WK_EALGO, wk_wf_polygon(W)->name, 0,
                        "motorcycle: no progress at t = %.17g (traces cut again and again at one "
                        "crossing)",
@@ -1558,9 +1566,7 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
     uint32_t si = wk_event_queue_pop(R, &A->Q);
     mc_seg *S = &A->s[si];
     double t = wk_wf_now(W);
-    A->guard_n = t == A->guard_t ? A->guard_n + 1 : 0;
-    A->guard_t = t;
-    if (A->guard_n > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024)
+    if (over_budget(A, W, &A->guard_t, &A->guard_n))
         return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "motorcycle: no progress at t = %.17g", t);
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
     if (!live(S)) return WK_OK;
