@@ -111,7 +111,8 @@ static bool seed_take(expansion *e, int i) {
 }
 
 /* cgal: unit weights only, and not above --cgal-max-n; a variant without
-** WK_VARIANT_WEIGHTS (motorcycle): unit weights only; a variant named in
+** WK_VARIANT_WEIGHTS (motorcycle): unit weights only (it takes equal ones,
+** but the weight modes other than unit are unequal); a variant named in
 ** --max-n: not above its n. */
 static int variant_count(expansion *e) { return e->o->variants.n; }
 static bool variant_take(expansion *e, int i) {

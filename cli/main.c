@@ -361,16 +361,6 @@ int main(int argc, char **argv) {
             rc = report(&R, verbose);
             goto done;
         }
-    if (!(wk_variant_flags(V) & WK_VARIANT_WEIGHTS)) {
-        for (uint32_t i = 0; i < P->n; i++)
-            if (P->w[i] != 1.0) {
-                WK_FAIL(&R, WK_EUNSUPPORTED, P->name, 0,
-                        "variant %s supports unit weights only (edge %u has weight %g)",
-                        wk_variant_name(V), wk_polygon_input_edge(P, i), P->w[i]);
-                rc = report(&R, verbose);
-                goto done;
-            }
-    }
     wk_validate_report rep;
     if (check ? wk_solve_checked(&R, V, P, check_tol * wk_polygon_scale(P), &S, &time_s, &peak,
                                  &rep) != WK_OK

@@ -137,6 +137,24 @@ wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skele
         if (R->obs->finished) R->obs->finished(R->obs_ud, false);
         return st;
     }
+    /* A variant without WK_VARIANT_WEIGHTS takes equal weights: one weight w
+    ** for every edge is the unit-weight skeleton with its times divided by
+    ** w, so it needs nothing of the variant.  Unequal weights are refused
+    ** here, for library callers as for the CLI (the CLI refused every
+    ** weight other than 1, equal ones too, which such a variant solves). */
+    if (!(V->flags & WK_VARIANT_WEIGHTS))
+        for (uint32_t i = 1; i < P->n; i++)
+            if (P->w[i] != P->w[0]) {
+                const char *able = wk_variant_with_flags(WK_VARIANT_WEIGHTS);
+                wk_status st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                                       "variant %s supports equal weights only (edge %u has weight "
+                                       "%g, edge %u %g); %s takes unequal weights",
+                                       V->name, wk_polygon_input_edge(P, i), P->w[i],
+                                       wk_polygon_input_edge(P, 0), P->w[0],
+                                       able ? able : "(none registered)");
+                if (R->obs->finished) R->obs->finished(R->obs_ud, false);
+                return st;
+            }
     double t0 = wk_clock_s();
     wk_status st = V->run(R, P, out);
     if (time_s) *time_s = wk_clock_s() - t0;

@@ -790,7 +790,7 @@ wk_status wk_write_offsets_wkt(wk_run *R, FILE *f, wk_offset_set *const *O, uint
 /* A variant is one algorithm (variants/<name>/); its struct is the
 ** interface a variant implements (engine/variant.h).  Here: what callers
 ** may ask of one. */
-#define WK_VARIANT_WEIGHTS 1u /* handles non-unit weights */
+#define WK_VARIANT_WEIGHTS 1u /* handles unequal weights (without it: equal ones only, wk_solve refuses the rest) */
 #define WK_VARIANT_USES_K 2u  /* the k option matters */
 /* takes weights <= 0 (zero: a stationary edge, a wall; negative: an edge
 ** moving outward, an overhang) and --height (wk_options.height): the

@@ -428,7 +428,7 @@ for f in "$PSLG"/*.graphml; do
   b=$(basename "$f")
   run "$WSKEL" --variant motorcycle --check --stats -o "$TMP/pslg_mc.json" "$f"
   case "$b" in collinear_weights*|square_dangling*|weighted_*)
-    expect "pslg $b: motorcycle refuses weights (exit 2)" 2 "unit weights only"
+    expect "pslg $b: motorcycle refuses weights (exit 2)" 2 "equal weights only"
     continue;;
   esac
   expect "pslg $b: motorcycle --check exits 0" 0

@@ -303,7 +303,7 @@ class Degenerate(unittest.TestCase):
             if v[0] == "monotone" and rc == 2 and "not monotone" in err and not monotone_required:
                 t.skip(name, "refused by monotone (not monotone; naive and arrangement compared)")
                 continue
-            if v[0] == "motorcycle" and rc == 2 and "unit weights only" in err:
+            if v[0] == "motorcycle" and rc == 2 and "equal weights only" in err:
                 t.skip(name, "refused by motorcycle (weighted; the others compared)")
                 continue
             if rc != 0:

@@ -95,7 +95,7 @@ class Motorcycle(unittest.TestCase):
         self.assertIsNotNone(path)
         rc, out, err = tl.run([tl.WSKEL, "--variant", "motorcycle", path])
         self.assertEqual(rc, 2, err)
-        self.assertIn("unit weights only", err)
+        self.assertIn("equal weights only", err)
         self.assertEqual(out, "", "no skeleton for a refused input")
 
 

@@ -84,7 +84,7 @@ OUTCOMES = ["pass", "fallback", "exit2", "exit3", "differs", "timeout", "crash",
             "unref"]
 FAILURES = {"exit2", "exit3", "differs", "timeout", "crash", "refused", "other"}
 NOT_MONOTONE = "not monotone in any direction"
-UNIT_ONLY = "supports unit weights only"
+UNIT_ONLY = "supports equal weights only"
 
 # Set in each worker by init_worker.
 CFG = {}
