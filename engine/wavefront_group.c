@@ -1625,6 +1625,23 @@ static wk_status check_cycles_sane(wk_wavefront *W) {
             return WK_FAIL(W->R, WK_EALGO, W->P->name, 0,
                            "wavefront: wavefront cycle of %u vertices after t = %.17g", len, W->t_now);
     }
+    /* No live vertex may still link to a vertex the group ended.  The walk
+    ** above starts at the fresh vertices only: a group that ended a vertex
+    ** without relinking its live neighbour left that neighbour's next on
+    ** the dead vertex, and a later cycle walk over the broken links
+    ** (wk_wf_near_split's) never came back: a star 32-gon with a vertex
+    ** moved 1e11 out, eps_d 100, a local-walk group widened to eps_g 200
+    ** whose pinches made the first vertex of a stretch arrive at the node
+    ** after local_walk_suffices had passed
+    ** (tests/data/fuzz/timeout_motorcycle_star_far_vertex_1e11.wpoly).
+    ** Failing here (WK_EALGO) hands the input to the caller's fallback. */
+    for (uint32_t i = 0; i < W->n_dead; i++) {
+        const wk_wf_vertex *d = &W->v[W->dead[i]];
+        if ((W->v[d->next].alive && W->v[d->next].prev == W->dead[i]) ||
+            (W->v[d->prev].alive && W->v[d->prev].next == W->dead[i]))
+            return WK_FAIL(W->R, WK_EALGO, W->P->name, 0,
+                           "wavefront: a live vertex links to an ended one after t = %.17g", W->t_now);
+    }
     return WK_OK;
 }
 

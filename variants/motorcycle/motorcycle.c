@@ -77,6 +77,7 @@ typedef struct mc_cross {
 
 typedef struct mc_seg {
     uint32_t v;          /* its reflex vertex; WK_NONE once removed */
+    uint32_t cut_a;      /* the piece of its last cut, in instant cut_at (cut) */
     wk_point o, u;       /* the trace: o + lambda u (relative coordinates) */
     double len;
     uint32_t pa, pb;     /* F's piece pa -> pb, WK_NONE if F is unknown or beyond */
@@ -84,6 +85,7 @@ typedef struct mc_seg {
     bool xodd;           /* a crossing with a NaN place was added: x is not
                             sorted by place, the scans below read it whole */
     uint32_t next_on, prev_on; /* the list of traces whose F is on piece pa */
+    uint32_t cut_at;     /* ... the instant's number (mc_state.cut_instant) */
     mc_cross *x;         /* crossings, sorted by (lam, other) */
     uint32_t nx, capx;
     mc_cross xf;         /* next crossing F reaches (towards v) */
@@ -126,6 +128,7 @@ typedef struct mc_state {
     uint64_t guard_n;
     double cut_t;        /* cut's budget: the instant counted, and the cuts in it */
     uint64_t cut_n;
+    uint32_t cut_instant; /* numbers cut's instants (from 1): mc_seg.cut_at */
     mc_piece_grid pg;    /* ray shots (piece_grid.h) */
     mc_trace_grid tg;    /* traces by place, built at the first list_crossings */
     double tg_pad;       /* each part is indexed this much longer at both ends */
@@ -540,6 +543,7 @@ static wk_status new_segment(mc_state *A, uint32_t v, wk_point o, wk_point u, do
     S->pa = S->pb = S->next_on = S->prev_on = S->probe = WK_NONE;
     S->ba = S->bb = S->next_b = S->prev_b = WK_NONE;
     S->xf = S->xv = NO_CROSS;
+    S->cut_a = WK_NONE;
     if (v != WK_NONE) A->seg_of[v] = si;
     *out = si;
     return index_part(A, si, 0, len);
@@ -1409,14 +1413,18 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     ** bound process_next keeps on events) end the run with exit 2, not a
     ** hang.  A fuzz finding (tests/data/fuzz/ealgo_motorcycle_cut_storm.wpoly,
     ** a monotone 48-gon with a vertex pulled 1.8e12 down): the traces
-    ** through one crossing re-cut each other without end inside a single
-    ** event, so the events' own bound never saw it.  The cause is not
-    ** found yet (issue 13). */
+    ** through one crossing re-cut each other inside a single event, so the
+    ** events' own bound never saw it.  Its cause (the re-cut test below,
+    ** cut_at) is fixed; the budget stays as the safety net (issue 13). */
+    if (t != A->cut_t || A->cut_instant == 0) A->cut_instant++;
     if (over_budget(A, W, &A->cut_t, &A->cut_n))
         return WK_FAIL(A->R, WK_EALGO, wk_wf_polygon(W)->name, 0,
                        "motorcycle: no progress at t = %.17g (traces cut again and again at one "
                        "crossing)",
                        t);
+    T = &A->s[sj];
+    T->cut_at = A->cut_instant;
+    T->cut_a = a;
     /* The part of s' beyond X is no longer reached from v': if a piece
     ** sweeps it on (far) and it guards traces, it lives on as a ghost; else
     ** its guards go. */
@@ -1460,8 +1468,19 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
         const mc_seg *O = &A->s[c.other];
         /* already cut by this piece in this instant (a piece parallel to a
         ** trace leaves its F undefined, so `unswept` alone would cut it
-        ** again and again: a fuzz finding, infinite recursion) */
-        if (O->pa == a) continue;
+        ** again and again: a fuzz finding, infinite recursion).  pa alone
+        ** does not tell: a cut that finds v' at X (the hold below) or shoots
+        ** F (place_f: unknown, or beyond) leaves pa != a and F unknown, and
+        ** `unswept` is true for an unknown F.  The cut storm (issue 13,
+        ** tests/data/fuzz/ealgo_motorcycle_cut_storm.wpoly: eps_d 1800, the
+        ** 48-gon's body 2000 wide, 22 motorcycles crashing at one point
+        ** within eps_d) cut five traces through one X by piece 40 and each
+        ** held; each cut then cut the other four again, a recursion that
+        ** grew without end (until the budget stopped it).  So
+        ** the trace keeps its last cut (cut_a in the instant cut_at): a
+        ** second cut by one piece in one instant puts F on that piece
+        ** again, nothing new. */
+        if (O->pa == a || (O->cut_a == a && O->cut_at == A->cut_instant)) continue;
         wk_point X = {A->s[sj].o.x + c.lam * A->s[sj].u.x, A->s[sj].o.y + c.lam * A->s[sj].u.y};
         double lo = lambda_of(O, X);
         if (unswept(W, O, lo, t) && !own_piece(W, O, a) &&
