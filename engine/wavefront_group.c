@@ -1356,6 +1356,23 @@ static wk_status run_node(wk_wavefront *W, uint32_t i, double t, uint32_t *node)
     return WK_OK;
 }
 
+/* Link a -> b in the collinear rule's rebuild, listing a as fresh when its
+** next changes (wk_wf_last_group: "created or relinked"), as commit() does
+** for every tail.  The vertex before the run (prev(u0)) is an old vertex
+** that gets a new next here.  Unlisted, a finder that files what it tracks
+** on a piece under the piece's start vertex (paper 000's finder: its
+** moving Steiner vertex F on prev(u0) -> u0, u0 swept by the rule)
+** never heard that the piece had ended: F stayed on it, later switched
+** from it onto an unrelated piece of the same edge, and a reflex vertex
+** split there, 124 units off its line (stress s1-c04321-weight_ratio,
+** exit 3 on valid input: the rule on edges 4 and 8 at t = 6.5e-4 relinked
+** vertex 243; tests/data/degenerate/arr_collinear_relink_stale_piece.wpoly). */
+static wk_status relink(wk_wavefront *W, uint32_t a, uint32_t b) {
+    bool changed = W->v[a].next != b;
+    wf_link(W, a, b);
+    return changed ? wf_mark_fresh(W, a) : WK_OK;
+}
+
 /* The collinear rule (000, section 1).  Vertex vi sits between parallel
 ** edges of different weight, which no moving vertex can join.  Take the
 ** maximal run of consecutive pieces on that line (a run, not one pair: three
@@ -1445,12 +1462,12 @@ wk_status wf_collinear_rule(wk_wavefront *W, uint32_t vi, double t) {
         if (i < m && !lost_after) leave = eout;
         if (leave != cur_out) {
             uint32_t g = wf_new_vertex(W, cur_out, leave, q, t, nd);
-            if (g == WK_NONE || wf_mark_fresh(W, g) != WK_OK) return R->err.code;
-            wf_link(W, cur, g);
+            if (g == WK_NONE || wf_mark_fresh(W, g) != WK_OK || relink(W, cur, g) != WK_OK)
+                return R->err.code;
             cur = g;
             cur_out = leave;
         }
-        if (i == m) wf_link(W, cur, p_next);
+        if (i == m && relink(W, cur, p_next) != WK_OK) return R->err.code;
     }
 #undef PIECE_EDGE
     return WK_OK;

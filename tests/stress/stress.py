@@ -40,7 +40,15 @@ variant, outcome, message; each file in tests/data/stress/): fails if no
 case ran, if a class had no valid case, on a failure that is not known, on
 a known one whose outcome changed and on a known one that now passes (so
 the list stays true).  --update-known rewrites KNOWN and its files from
-this run's failures (review the diff before committing it).
+this run's failures (review the diff before committing it); rows whose
+file is not one of this run's cases (the full sweep's) are kept.
+
+The full sweep (make stress) is checked against KNOWN the same way (a
+known row that is not one of its cases is run from its file), so it
+passes when every failure is listed; it lists every failure in its
+summary either way.  Full-sweep rows name the file where the case is kept
+with its evidence, relative to tests/data/stress/ (e.g.
+../degenerate/NAME.wpoly, a file of KNOWN_FILES in tests/test_degenerate.py).
 
 The programs are copied to a private directory first, so rebuilding bin/
 during a run changes nothing.  Environment: WSKEL_BIN, WSKEL_GEN_BIN.
@@ -432,12 +440,19 @@ def check_known(summary, records, log):
 
 
 def update_known(records, summary):
-    """Rewrite tests/data/stress/ from this run's failures."""
+    """Rewrite tests/data/stress/ from this run's failures; the rows (and
+    files) of cases that this run did not make (the full sweep's) stay."""
     os.makedirs(KNOWN_DIR, exist_ok=True)
+    made = set(rec["hash"] for rec in records if rec["state"] == "ran")
+    rows, keep = [], set()
+    for fname, var, oc, msg in read_known():
+        path = os.path.join(KNOWN_DIR, fname)
+        if os.path.exists(path) and file_hash(path)[0] not in made:
+            rows.append("%s\t%s\t%s\t%s" % (fname, var, oc, msg))
+            keep.add(os.path.normpath(path))
     for f in os.listdir(KNOWN_DIR):
-        if f.endswith(".wpoly"):
+        if f.endswith(".wpoly") and os.path.normpath(os.path.join(KNOWN_DIR, f)) not in keep:
             os.unlink(os.path.join(KNOWN_DIR, f))
-    rows = []
     for rec in sorted(records, key=lambda r: r["index"]):
         if not summary.failing(rec):
             continue
@@ -449,12 +464,14 @@ def update_known(records, summary):
             if r[0] in FAILURES:
                 rows.append("%s\t%s\t%s\t%s" % (fname, var, r[0], short(r[1], 300)))
     with open(KNOWN_FILE, "w") as f:
-        f.write("# Known failures of the quick stress sweep (make stress-quick, run by make\n"
-                "# test): file<TAB>variant<TAB>outcome<TAB>message.  Each file is a case\n"
-                "# of tests/stress/stress.py --quick, committed here.  make test fails on\n"
-                "# a failure not listed, on a listed one whose outcome changed and on a\n"
-                "# listed one that passes (remove its line, and its file when no line is\n"
-                "# left).  Rewritten by tests/stress/stress.py --quick --update-known.\n")
+        f.write("# Known failures of the stress sweep (make stress-quick, run by make test,\n"
+                "# and make stress): file<TAB>variant<TAB>outcome<TAB>message.  A file is\n"
+                "# a case of tests/stress/stress.py --quick, committed here, or a case of\n"
+                "# the full sweep, named relative to this directory where it is kept with\n"
+                "# its evidence.  Both sweeps fail on a failure not listed, on a listed one\n"
+                "# whose outcome changed and on a listed one that passes (remove its line,\n"
+                "# and its file when no line is left).  Rewritten by tests/stress/stress.py\n"
+                "# --quick --update-known, which keeps the full sweep's rows.\n")
         for r in rows:
             f.write(r + "\n")
     return len(rows)
@@ -592,7 +609,14 @@ def main(argv=None):
                        "per_class": {"%s/%s" % k: dict(v) for k, v in summary.counts.items()},
                        "states": {c: dict(s) for c, s in summary.state.items()}}, f, indent=1)
         if not a.quick:
-            return 1 if nfail else 0
+            # make stress: every failure must be a known one (KNOWN, as --quick)
+            problems = check_known(summary, records, lambda s: print(s, file=sys.stderr))
+            if problems:
+                print("stress: FAILED:\n  " + "\n  ".join(problems), file=sys.stderr)
+                return 1
+            print("stress: ok: %d cases ran, %d with a failure, all known (%d rows of %s)"
+                  % (ran, nfail, len(read_known()), KNOWN_FILE), file=sys.stderr)
+            return 0
         # ---- quick: the make test verdict
         problems = []
         if ran == 0:
