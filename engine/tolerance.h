@@ -462,4 +462,39 @@
 ** (WK_EALGO) rather than join crossings that are apart. */
 #define WK_OFFSET_TIE_REL 1e-6
 
+/* ------------------------------------------------------ the input domain */
+
+/* A polygon is refused on input (polygon.c, check_width) when it may lie
+** wholly within c = WK_POLYGON_MIN_WIDTH_REL * scale of its boundary: then
+** every feature of it, the whole skeleton included, is below the
+** simulation's tolerance, and the variants return skeletons of different
+** topology that each pass the validator (fuzz findings in tests/data/fuzz:
+** a 4-gon 4 wide and 2.4e11 long, eps_d = 243, where naive, arrangement,
+** monotone and deforming gave three different skeletons,
+** below_tolerance_thin_4gon_2e11.wpoly; a notched 12-gon of radius 1000 with
+** one vertex at 2.2e13, eps_d = 2.2e4, where naive and deforming differed,
+** mismatch_deforming_notched_needle_2e13.wpoly).  The test: every point of a
+** polygon whose largest inscribed circle has radius R lies within R of the
+** boundary; its nearest boundary point is inside an edge (the point lies in
+** the strip of width R over that edge on the inner side: area at most
+** R * length) or a reflex vertex (the sector between the two edges'
+** normals: area below pi/2 R^2), so A <= R P + pi/2 r R^2 (P the length of
+** all rings, r the reflex vertices).  A < c P + pi/2 r c^2 is therefore
+** necessary for R <= c: every polygon with R <= c is refused.  It is not
+** sufficient: long needles (two edges closer than c) add perimeter and no
+** area, so a polygon with a fat part and needles can be refused with R > c.
+** Why WK_TOL_ESCALATE_STEP * WK_TOL_REL (4e-9): R <= 4 eps_d is below the
+** tolerance of the first retry of wk_solve_checked and of every coarser one,
+** so which attempt answers decides the topology; the factor 16 to the
+** coarsest (64 eps_d) leaves room for the needles.  Measured with the mean
+** width 2A / (P * scale) (the test for r = 0 is 2A / (P * scale) < 2 * 4e-9):
+** the two findings above 2.1e-12 and 2.3e-11; every polygon of tests/data
+** that the bound refuses has R <= 25 eps_d (deform_spike_tip_arrives.wpoly:
+** 2A/(P scale) = 4.7e-9); the next ones kept, 2.0e-8 (R = 8.9 eps_d) and
+** 6.4e-8 (tests/data/fuzz/ealgo_arrangement_pinch.wpoly, R = 549 eps_d: a
+** fat part with a needle 4.25e8 long, refused by 64 eps_d); the bench
+** generators' smallest at n = 10^5 is 2.9e-5 (star, comb, random: it falls
+** as 1/n, 6e-8 at the 5e7 vertices wk_polygon_from_rings accepts). */
+#define WK_POLYGON_MIN_WIDTH_REL (WK_TOL_ESCALATE_STEP * WK_TOL_REL)
+
 #endif
