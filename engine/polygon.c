@@ -689,10 +689,12 @@ static wk_status check_offset(wk_run *R, const wk_polygon *P, const long *lines)
 /* The input domain's bound on thinness: refuse a polygon that may lie
 ** wholly within c = WK_POLYGON_MIN_WIDTH_REL diagonals of its boundary,
 ** i.e. A < c P + pi/2 r c^2 (tolerance.h says why, and why this is necessary
-** for an inscribed radius <= c).  A is exact then rounded, P sums the edges'
-** lengths in stored order, r is the reflex count: all independent of the
-** origin and of the input's orientation.  Names the vertex farthest from
-** the bounding-box centre, which usually stretches the diagonal. */
+** for an inscribed radius <= c).  A is exact then rounded (wk_polygon_area),
+** P sums the edges' lengths from coordinate differences (one rounding each,
+** no origin enters), r is the reflex count (exact): deterministic, and the
+** same for the stored polygon (wk_polygon_validate, the writer's round
+** trip).  Names the vertex farthest from the bounding-box centre, which
+** usually stretches the diagonal. */
 static wk_status check_width(wk_run *R, const wk_polygon *P, uint32_t r, const long *lines) {
     double scale = wk_polygon_scale(P), c = WK_POLYGON_MIN_WIDTH_REL * scale;
     double area = wk_polygon_area(P), perimeter = 0, far = -1;
@@ -715,8 +717,7 @@ static wk_status check_width(wk_run *R, const wk_polygon *P, uint32_t r, const l
                    "domain, see README); its vertex farthest from the centre: vertex %u "
                    "(%.17g, %.17g)",
                    area, perimeter, scale, 2 * area / perimeter / scale, WK_POLYGON_MIN_WIDTH_REL,
-                   r,
-                   in, P->p[at].x, P->p[at].y);
+                   r, in, P->p[at].x, P->p[at].y);
 }
 
 /* ---- construction ---- */

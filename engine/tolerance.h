@@ -481,20 +481,31 @@
 ** normals: area below pi/2 R^2), so A <= R P + pi/2 r R^2 (P the length of
 ** all rings, r the reflex vertices).  A < c P + pi/2 r c^2 is therefore
 ** necessary for R <= c: every polygon with R <= c is refused.  It is not
-** sufficient: long needles (two edges closer than c) add perimeter and no
-** area, so a polygon with a fat part and needles can be refused with R > c.
-** Why WK_TOL_ESCALATE_STEP * WK_TOL_REL (4e-9): R <= 4 eps_d is below the
-** tolerance of the first retry of wk_solve_checked and of every coarser one,
-** so which attempt answers decides the topology; the factor 16 to the
-** coarsest (64 eps_d) leaves room for the needles.  Measured with the mean
-** width 2A / (P * scale) (the test for r = 0 is 2A / (P * scale) < 2 * 4e-9):
-** the two findings above 2.1e-12 and 2.3e-11; every polygon of tests/data
-** that the bound refuses has R <= 25 eps_d (deform_spike_tip_arrives.wpoly:
-** 2A/(P scale) = 4.7e-9); the next ones kept, 2.0e-8 (R = 8.9 eps_d) and
-** 6.4e-8 (tests/data/fuzz/ealgo_arrangement_pinch.wpoly, R = 549 eps_d: a
-** fat part with a needle 4.25e8 long, refused by 64 eps_d); the bench
-** generators' smallest at n = 10^5 is 2.9e-5 (star, comb, random: it falls
-** as 1/n, 6e-8 at the 5e7 vertices wk_polygon_from_rings accepts). */
-#define WK_POLYGON_MIN_WIDTH_REL (WK_TOL_ESCALATE_STEP * WK_TOL_REL)
+** sufficient: a thin triangle has R = 2A/P, twice the strip's A/P, and long
+** needles (two edges closer than c) add perimeter and no area, so a polygon
+** with R up to a few c can be refused.
+** Why WK_TOL_REL, the nominal eps_d: with R <= eps_d no part of the polygon
+** is above the tolerance of the first attempt of wk_solve_checked nor of any
+** coarser retry (only its finer fallbacks, run when every coarser attempt
+** failed, look below it); a bar at the coarsest retry (64 eps_d) would refuse
+** polygons every variant resolves (R = 25 eps_d below).
+** Measured as the mean width 2A / (P * scale) (the test for r = 0 is
+** 2A / (P * scale) < 2e-9): the two findings above 2.1e-12 and 2.3e-11;
+** the polygons of tests/data it refuses (14, fuzz findings of a part of
+** size 1 to 1000 beside a vertex 5e8 to 2e13 away, and the degenerate
+** reg64_far.wpoly, a unit 64-gon with a vertex 4e9 away: 2.5e-11) have an
+** inscribed radius (the largest distance of a skeleton node from the
+** boundary) of at most 6.4 eps_d, all at or below 1.5e-9; the smallest
+** kept: 2.0e-9 (tests/data/fuzz/mismatch_monotone_long_collinear.wpoly, a
+** triangle 1 high and 2.5e8 long, R = 2 eps_d, kept by 2e-9 of its area) and
+** 4.7e-9 (tests/data/degenerate/deform_spike_tip_arrives.wpoly, a 33-gon of
+** radius 100 with a vertex 4e9 away: R = 25 eps_d, which every variant
+** resolves); the stress class regular_4e9 (6- to 64-gons of radius 1e-3
+** to 1000, a vertex 4e9 away) refuses radius 1 and below (at most 2.2e-10)
+** and keeps 100 and above (at least 2.4e-9, the 64-gon).  Far above:
+** a road 1 m wide and 10 km long 1e-4, a spiral corridor 1e-5 of its size
+** 7e-6, the bench generators' smallest at n = 10^5 2.9e-5 (star, comb,
+** random; it falls as 1/n, to 6e-8 at the 5e7 vertices accepted). */
+#define WK_POLYGON_MIN_WIDTH_REL WK_TOL_REL
 
 #endif

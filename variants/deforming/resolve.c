@@ -794,8 +794,7 @@ static wk_status resolve(df_state *D, double te) {
     ** where its base closed, which it reaches 6.3e-7 later, within the
     ** group's span of 6.7e-7; left out, the spike's two sides left the point
     ** side by side (WK_EALGO, the reference: stress s1-c00203-regular_4e9,
-    ** tests/data/bad/deform_spike_tip_arrives.wpoly, refused on
-    ** input since the width bound, WK_POLYGON_MIN_WIDTH_REL). */
+    ** tests/data/degenerate/deform_spike_tip_arrives.wpoly). */
     double span = 0;
     for (uint32_t i = 0; i < D->n_ev; i++)
         if (D->ev[i].t - te > span) span = D->ev[i].t - te;
