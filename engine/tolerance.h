@@ -469,10 +469,10 @@
 ** every feature of it, the whole skeleton included, is below the
 ** simulation's tolerance, and the variants return skeletons of different
 ** topology that each pass the validator (fuzz findings in tests/data/fuzz:
-** a 4-gon 4 wide and 2.4e11 long, eps_d = 243, where naive, arrangement,
-** monotone and deforming gave three different skeletons,
-** below_tolerance_thin_4gon_2e11.wpoly; a notched 12-gon of radius 1000 with
-** one vertex at 2.2e13, eps_d = 2.2e4, where naive and deforming differed,
+** a 4-gon 4 wide and 2.4e11 long, eps_d = 243, where four variants gave
+** three different skeletons, below_tolerance_thin_4gon_2e11.wpoly; a
+** notched 12-gon of radius 1000 with one vertex at 2.2e13, eps_d = 2.2e4,
+** where two variants differed,
 ** mismatch_deforming_notched_needle_2e13.wpoly).  The test: every point of a
 ** polygon whose largest inscribed circle has radius R lies within R of the
 ** boundary; its nearest boundary point is inside an edge (the point lies in
