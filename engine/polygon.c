@@ -686,6 +686,40 @@ static wk_status check_offset(wk_run *R, const wk_polygon *P, const long *lines)
     return WK_OK;
 }
 
+/* The input domain's bound on thinness: refuse a polygon that may lie
+** wholly within c = WK_POLYGON_MIN_WIDTH_REL diagonals of its boundary,
+** i.e. A < c P + pi/2 r c^2 (tolerance.h says why, and why this is necessary
+** for an inscribed radius <= c).  A is exact then rounded (wk_polygon_area),
+** P sums the edges' lengths from coordinate differences (one rounding each,
+** no origin enters), r is the reflex count (exact): deterministic, and the
+** same for the stored polygon (wk_polygon_validate, the writer's round
+** trip).  Names the vertex farthest from the bounding-box centre, which
+** usually stretches the diagonal. */
+static wk_status check_width(wk_run *R, const wk_polygon *P, uint32_t r, const long *lines) {
+    double scale = wk_polygon_scale(P), c = WK_POLYGON_MIN_WIDTH_REL * scale;
+    double area = wk_polygon_area(P), perimeter = 0, far = -1;
+    wk_point o = wk_polygon_centre(P);
+    uint32_t at = 0;
+    for (uint32_t i = 0; i < P->n; i++) {
+        wk_point a = P->p[i], b = P->p[wk_polygon_next(P, i)];
+        perimeter += hypot(b.x - a.x, b.y - a.y);
+        double m = hypot(a.x - o.x, a.y - o.y);
+        if (m > far) far = m, at = i;
+    }
+    const double half_pi = 1.5707963267948966;
+    if (!(area < c * perimeter + half_pi * r * c * c)) return WK_OK;
+    uint32_t in = P->input_index ? P->input_index[at] : at;
+    return WK_FAIL(R, WK_EINPUT, P->name, line_of(lines, in),
+                   "polygon thinner than the tolerance: area %.6g, perimeter %.6g, diagonal %.6g: "
+                   "mean width 2A/P = %.3g diagonals, below 2c for c = %g diagonals "
+                   "(WK_POLYGON_MIN_WIDTH_REL; the bound: A < c P + pi/2 r c^2, %u reflex "
+                   "vertices), so all of it may lie within the tolerance of its boundary (input "
+                   "domain, see README); its vertex farthest from the centre: vertex %u "
+                   "(%.17g, %.17g)",
+                   area, perimeter, scale, 2 * area / perimeter / scale, WK_POLYGON_MIN_WIDTH_REL,
+                   r, in, P->p[at].x, P->p[at].y);
+}
+
 /* ---- construction ---- */
 
 /* Reverse ring k in place: stored local vertex j := input local m-1-j.
@@ -793,6 +827,7 @@ wk_status wk_polygon_from_rings(wk_run *R, uint32_t n_rings, const uint32_t *rin
     if ((st = check_offset(R, P, lines)) != WK_OK) goto fail;
     P->r = 0;
     for (uint32_t i = 0; i < n; i++) P->r += wk_polygon_is_reflex_counted(R, P, i);
+    if ((st = check_width(R, P, P->r, lines)) != WK_OK) goto fail;
     WK_FREE_ARRAY(R, ccw, n_rings);
     *out = P;
     return WK_OK;
@@ -845,6 +880,7 @@ wk_status wk_polygon_validate(wk_run *R, const wk_polygon *P) {
     uint32_t r = 0;
     for (uint32_t i = 0; i < n; i++) r += wk_polygon_is_reflex_counted(R, P, i);
     if (r != P->r) st = WK_FAIL(R, WK_EINPUT, name, 0, "reflex count is %u, stored %u", r, P->r);
+    else st = check_width(R, P, r, NULL);
 done:
     WK_FREE_ARRAY(R, ccw, h);
     return st;

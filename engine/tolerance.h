@@ -462,4 +462,50 @@
 ** (WK_EALGO) rather than join crossings that are apart. */
 #define WK_OFFSET_TIE_REL 1e-6
 
+/* ------------------------------------------------------ the input domain */
+
+/* A polygon is refused on input (polygon.c, check_width) when it may lie
+** wholly within c = WK_POLYGON_MIN_WIDTH_REL * scale of its boundary: then
+** every feature of it, the whole skeleton included, is below the
+** simulation's tolerance, and the variants return skeletons of different
+** topology that each pass the validator (fuzz findings in tests/data/fuzz:
+** a 4-gon 4 wide and 2.4e11 long, eps_d = 243, where four variants gave
+** three different skeletons, below_tolerance_thin_4gon_2e11.wpoly; a
+** notched 12-gon of radius 1000 with one vertex at 2.2e13, eps_d = 2.2e4,
+** where two variants differed,
+** mismatch_deforming_notched_needle_2e13.wpoly).  The test: every point of a
+** polygon whose largest inscribed circle has radius R lies within R of the
+** boundary; its nearest boundary point is inside an edge (the point lies in
+** the strip of width R over that edge on the inner side: area at most
+** R * length) or a reflex vertex (the sector between the two edges'
+** normals: area below pi/2 R^2), so A <= R P + pi/2 r R^2 (P the length of
+** all rings, r the reflex vertices).  A < c P + pi/2 r c^2 is therefore
+** necessary for R <= c: every polygon with R <= c is refused.  It is not
+** sufficient: a thin triangle has R = 2A/P, twice the strip's A/P, and long
+** needles (two edges closer than c) add perimeter and no area, so a polygon
+** with R up to a few c can be refused.
+** Why WK_TOL_REL, the nominal eps_d: with R <= eps_d no part of the polygon
+** is above the tolerance of the first attempt of wk_solve_checked nor of any
+** coarser retry (only its finer fallbacks, run when every coarser attempt
+** failed, look below it); a bar at the coarsest retry (64 eps_d) would refuse
+** polygons every variant resolves (R = 25 eps_d below).
+** Measured as the mean width 2A / (P * scale) (the test for r = 0 is
+** 2A / (P * scale) < 2e-9): the two findings above 2.1e-12 and 2.3e-11;
+** the polygons of tests/data it refuses (14, fuzz findings of a part of
+** size 1 to 1000 beside a vertex 5e8 to 2e13 away, and the degenerate
+** reg64_far.wpoly, a unit 64-gon with a vertex 4e9 away: 2.5e-11) have an
+** inscribed radius (the largest distance of a skeleton node from the
+** boundary) of at most 6.4 eps_d, all at or below 1.5e-9; the smallest
+** kept: 2.0e-9 (tests/data/fuzz/mismatch_monotone_long_collinear.wpoly, a
+** triangle 1 high and 2.5e8 long, R = 2 eps_d, kept by 2e-9 of its area) and
+** 4.7e-9 (tests/data/degenerate/deform_spike_tip_arrives.wpoly, a 33-gon of
+** radius 100 with a vertex 4e9 away: R = 25 eps_d, which every variant
+** resolves); the stress class regular_4e9 (6- to 64-gons of radius 1e-3
+** to 1000, a vertex 4e9 away) refuses radius 1 and below (at most 2.2e-10)
+** and keeps 100 and above (at least 2.4e-9, the 64-gon).  Far above:
+** a road 1 m wide and 10 km long 1e-4, a spiral corridor 1e-5 of its size
+** 7e-6, the bench generators' smallest at n = 10^5 2.9e-5 (star, comb,
+** random; it falls as 1/n, to 6e-8 at the 5e7 vertices accepted). */
+#define WK_POLYGON_MIN_WIDTH_REL WK_TOL_REL
+
 #endif

@@ -521,6 +521,50 @@ Test(polygon, accept_near_degenerate_valid) {
     ASSERT_CLEAN_CLOSE(R);
 }
 
+/* The width bound (WK_POLYGON_MIN_WIDTH_REL, tolerance.h): a 1 x h strip
+** (A = h, P = 2 (1 + h), no reflex vertex) is refused when h < 2c(1 + h),
+** c = 1e-9 times its diagonal, i.e. below h = 2e-9; the bound does not
+** depend on the orientation or on a translation, and wk_polygon_validate
+** applies it to a stored polygon. */
+Test(polygon, width_bound_refuses_a_strip_below_the_tolerance) {
+    cr_assert_eq(WK_POLYGON_MIN_WIDTH_REL, 1e-9);
+    for (int k = 0; k < 4; k++) {
+        double h = k & 1 ? 2.1e-9 : 1.9e-9, dx = k & 2 ? 1e3 : 0;
+        const double x[4] = {dx, dx + 1, dx + 1, dx}, y[4] = {0, 0, h, h};
+        const double xr[4] = {dx, dx, dx + 1, dx + 1}, yr[4] = {0, h, h, 0};
+        for (int cw = 0; cw < 2; cw++) {
+            wk_run R;
+            wk_run_init(&R);
+            wk_polygon *P = NULL;
+            wk_status st = wk_polygon_from_arrays(&R, 4, cw ? xr : x, cw ? yr : y, NULL, "t.wpoly",
+                                                  NULL, &P);
+            if (k & 1) {
+                cr_assert_eq(st, WK_OK, "h %g: %s", h, R.err.msg);
+                wk_polygon_free(&R, P);
+            } else {
+                cr_assert_eq(st, WK_EINPUT, "h %g accepted", h);
+                cr_assert_null(P);
+                cr_assert(strstr(R.err.msg, "polygon thinner than the tolerance") &&
+                              strstr(R.err.msg, "mean width 2A/P = 1.9e-09 diagonals") &&
+                              strstr(R.err.msg, "WK_POLYGON_MIN_WIDTH_REL") &&
+                              strstr(R.err.msg, "input domain"),
+                          "%s", R.err.msg);
+            }
+            ASSERT_CLEAN_CLOSE(R);
+        }
+    }
+    wk_run R;
+    wk_run_init(&R);
+    const double x[4] = {0, 1, 1, 0}, y[4] = {0, 0, 1e-8, 1e-8};
+    wk_polygon *P = polygon(&R, 4, x, y, NULL);
+    cr_assert_eq(wk_polygon_validate(&R, P), WK_OK);
+    P->p[2].y = P->p[3].y = 1.9e-9;
+    cr_assert_eq(wk_polygon_validate(&R, P), WK_EINPUT);
+    cr_assert(strstr(R.err.msg, "polygon thinner than the tolerance"), "%s", R.err.msg);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
+
 /* Collinear but disjoint non-adjacent edges are fine: a 2x4 rectangle with
 ** a 2x2 one attached on its left; edges 3 and 7 lie on x = 0 apart. */
 Test(polygon, accept_collinear_disjoint_edges) {
