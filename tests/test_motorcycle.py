@@ -90,26 +90,6 @@ class Motorcycle(unittest.TestCase):
         t.report(self)
         self.assertEqual(t.cases, 2 * SEEDS)
 
-    def test_cut_storm_solved_without_fallback(self):
-        """Issue 13: traces through one crossing re-cut each other inside one
-        event (a cut that held the trace or shot its F left F unknown, and
-        the re-cut test looked at F's piece only).  The cut budget handed
-        the storm file to the reference; now the finder itself must give
-        naive's skeleton there (reference_fallbacks 0), and on the older
-        finding of the same shape."""
-        fuzz = os.path.join(tl.ROOT, "tests", "data", "fuzz")
-        for name in ("ealgo_motorcycle_cut_storm.wpoly", "motorcycle_cut_recursion.wpoly"):
-            path = os.path.join(fuzz, name)
-            rc, out_n, err_n = tl.run([tl.WSKEL, "--check", path])
-            self.assertEqual(rc, 0, err_n)
-            rc, out, err = tl.run([tl.WSKEL, "--variant", "motorcycle", "--check", "--stats", path])
-            self.assertEqual(rc, 0, "%s: %s" % (name, err))
-            got = tl.json.loads(out)
-            self.assertEqual(int(got["stats"].get("reference_fallbacks", 0)), 0,
-                             "%s: handed to the reference" % name)
-            ok, why = tl.same_skeleton(tl.json.loads(out_n), got)
-            self.assertTrue(ok, "%s: differs from naive: %s" % (name, why))
-
     def test_weighted_is_refused(self):
         path = self.gen("star", 50, 1, ["--weights", "int"])
         self.assertIsNotNone(path)
