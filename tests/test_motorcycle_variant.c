@@ -45,3 +45,30 @@ Test(motorcycle_variant, every_allocation_failure_is_clean, .timeout = 300) {
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
 }
+
+/* A ghost's own B piece does not cut it (motorcycle.c, own_piece).  Such
+** cuts killed the ghost and extended every trace waiting on it, each
+** extension listing its crossings with about n traces and making a start
+** event at each: monotone 10^4 (seed 1) had 42 trace extensions and 12,395
+** start events, about n^2.7 over the family (3.0M at 10^5); with the rule
+** 0 and 5,025.  The bounds leave room for other changes, not for the
+** quadratic behaviour. */
+Test(motorcycle_variant, monotone_extensions_stay_few, .timeout = 120) {
+    wk_run R;
+    wk_run_init(&R);
+    const wk_variant *V = variant("motorcycle");
+    R.variant = V;
+    wk_polygon *P = NULL;
+    cr_assert_eq(gen(&R, "monotone", 10000, -1, 1, NULL, &P), WK_OK);
+    wk_skeleton *S = NULL;
+    cr_assert_eq(wk_solve(&R, V, P, &S, NULL, NULL), WK_OK, "%s", R.err.msg);
+    cr_assert_eq(counter(&R, "reference_fallbacks"), 0);
+    cr_assert_gt(counter(&R, "start_events"), 0);
+    cr_assert_lt(counter(&R, "start_events"), 10000, "start events %llu",
+                 (unsigned long long)counter(&R, "start_events"));
+    cr_assert_lt(counter(&R, "trace_extensions"), 10, "trace extensions %llu",
+                 (unsigned long long)counter(&R, "trace_extensions"));
+    wk_skeleton_free(&R, S);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
