@@ -18,23 +18,34 @@
 **       t = H, and there is no cap without a height;
 **   (d) closure: for each edge e, the arcs with e on a side plus the input
 **       edge e form closed walks (every node has even degree in them), and
-**       so do the cap's arcs.
+**       so do the cap's arcs;
+**   (e) no self-crossing: within each face (its arcs and its edge, in the
+**       face's own plane: (x, y) for w(e) != 0, where the plane is a graph
+**       over the xy plane; (position along e, |w|max t) for a wall) and
+**       within the cap (xy at t = H), no two sides that share no node
+**       cross or overlap by more than tol (a crossing within tol of an end
+**       is rounding; a face that has moved at most tol, an edge swept at
+**       once by the collinear rule at t = 0, may fold back along its edge).
 ** What this proves: every node of face e lies on e's plane (the plane
 ** through e rising with slope 1/w(e), vertical for w = 0), so each face is
 ** planar and the roof's faces meet along arcs that both of their planes
 ** contain; each face's boundary is the input edge plus closed walks (it
 ** contains its edge, and a face's arcs are shared with the neighbour named
-** on their other side, because every arc names both); the cap is closed.
-** What it cannot prove: that the faces do not overlap in space or are
-** simple polygons (with negative weights the roof overhangs, so its
-** projection is not a planar subdivision and validate.c's area and
-** planarity checks do not apply), or that the skeleton is the one the
-** wavefront defines rather than another roof with the same planes (an
-** arc could be missing where two closed walks join).
+** on their other side, because every arc names both) that do not cross one
+** another or themselves, so each face is a polygon in 3D (x, y, t) whose
+** boundary does not cross itself (with islands where a walk lies inside
+** another); the cap is closed and does not cross itself.  What it cannot
+** prove: that two faces do not overlap in space (with negative weights the
+** roof overhangs, so its projection is not a planar subdivision and
+** validate.c's area and planarity checks do not apply), that a face's
+** walks do not touch at a node (a pinch, allowed), or that the skeleton is
+** the one the wavefront defines rather than another roof with the same
+** planes (an arc could be missing where two closed walks join).
 */
 #include "validate_internal.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,6 +55,156 @@ static int incidence_cmp(const void *x, const void *y) {
     const incidence *a = x, *b = y;
     if (a->face != b->face) return a->face < b->face ? -1 : 1;
     return a->node < b->node ? -1 : a->node > b->node;
+}
+
+/* ---- (e): the sides of one face (or the cap) do not cross */
+
+typedef struct side2 {
+    wk_point a, b;    /* the side's ends in the face's plane */
+    uint32_t na, nb;  /* their nodes */
+    uint32_t what;    /* arc id, or n_arcs + e for the input edge e */
+} side2;
+
+static int side2_cmp(const void *x, const void *y) {
+    const side2 *a = x, *b = y;
+    double ax = fmin(a->a.x, a->b.x), bx = fmin(b->a.x, b->b.x);
+    if (ax != bx) return ax < bx ? -1 : 1;
+    return a->what < b->what ? -1 : a->what > b->what;
+}
+
+static double seg_point_dist(wk_point p, wk_point q, wk_point z) {
+    double dx = q.x - p.x, dy = q.y - p.y, len2 = dx * dx + dy * dy;
+    double u = len2 > 0 ? ((z.x - p.x) * dx + (z.y - p.y) * dy) / len2 : 0.0;
+    if (u < 0) u = 0;
+    if (u > 1) u = 1;
+    return hypot(z.x - (p.x + u * dx), z.y - (p.y + u * dy));
+}
+
+/* Length of the common part of two collinear segments. */
+static double common_length(wk_point a, wk_point b, wk_point c, wk_point d) {
+    double dx = b.x - a.x, dy = b.y - a.y;
+    if (hypot(dx, dy) < hypot(d.x - c.x, d.y - c.y)) {
+        dx = d.x - c.x;
+        dy = d.y - c.y;
+    }
+    double len = hypot(dx, dy);
+    if (!(len > 0)) return 0.0;
+    dx /= len;
+    dy /= len;
+    double a0 = a.x * dx + a.y * dy, a1 = b.x * dx + b.y * dy;
+    double c0 = c.x * dx + c.y * dy, c1 = d.x * dx + d.y * dy;
+    double lo = fmax(fmin(a0, a1), fmin(c0, c1)), hi = fmin(fmax(a0, a1), fmax(c0, c1));
+    return hi > lo ? hi - lo : 0.0;
+}
+
+static const char *side2_name(const wk_skeleton *S, const side2 *x, char *buf, size_t size) {
+    if (x->what >= S->n_arcs) snprintf(buf, size, "edge %u", x->what - S->n_arcs);
+    else snprintf(buf, size, "arc %u [%u, %u]", x->what, x->na, x->nb);
+    return buf;
+}
+
+/* The point of node v in face f's plane (f == WK_NONE: the cap, xy). */
+static wk_point in_plane(const wk_polygon *P, const wk_skeleton *S, uint32_t f, uint32_t v,
+                         double wabs) {
+    const wk_node *z = &S->nodes[v];
+    if (f == WK_NONE || P->w[f] != 0) return (wk_point){z->x, z->y};
+    wk_point a = P->p[f], d = wk_polygon_edge_dir(P, f);
+    double len = hypot(d.x, d.y);
+    return (wk_point){((z->x - a.x) * d.x + (z->y - a.y) * d.y) / len, z->t * wabs};
+}
+
+static wk_status check_sides(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t f,
+                             side2 *sd, size_t k, double tol, double wabs) {
+    qsort(sd, k, sizeof *sd, side2_cmp);
+    /* a face that has moved at most tol (an edge the collinear rule swept
+    ** at t = 0) is traced by arcs back and forth along its edge */
+    double tmax = 0;
+    for (size_t i = 0; i < k; i++) tmax = fmax(tmax, fmax(S->nodes[sd[i].na].t, S->nodes[sd[i].nb].t));
+    bool still = f != WK_NONE && tmax * (P->w[f] != 0 ? fabs(P->w[f]) : wabs) <= tol;
+    char s1[64], s2[64];
+    for (size_t i = 0; i < k; i++) {
+        double xmax = fmax(sd[i].a.x, sd[i].b.x);
+        for (size_t j = i + 1; j < k && fmin(sd[j].a.x, sd[j].b.x) <= xmax; j++) {
+            const side2 *x = &sd[i], *y = &sd[j];
+            if (x->na == y->na || x->na == y->nb || x->nb == y->na || x->nb == y->nb) continue;
+            wk_seg_meet m = wk_segments_meet_counted(R, x->a, x->b, y->a, y->b);
+            double near = 0;
+            if (m == WK_SEG_CROSS)
+                near = fmin(fmin(seg_point_dist(y->a, y->b, x->a), seg_point_dist(y->a, y->b, x->b)),
+                            fmin(seg_point_dist(x->a, x->b, y->a), seg_point_dist(x->a, x->b, y->b)));
+            else if (m == WK_SEG_OVERLAP && !still)
+                near = common_length(x->a, x->b, y->a, y->b);
+            if (near > tol) {
+                char what[32];
+                if (f == WK_NONE) snprintf(what, sizeof what, "the cap");
+                else snprintf(what, sizeof what, "the face of edge %u", f);
+                return WK_FAIL(R, WK_EINVALID, P->name, 0,
+                               "validate (general e): %s crosses itself: %s and %s %s", what,
+                               side2_name(S, x, s1, sizeof s1), side2_name(S, y, s2, sizeof s2),
+                               m == WK_SEG_CROSS ? "cross" : "overlap");
+            }
+        }
+    }
+    return WK_OK;
+}
+
+static wk_status check_no_self_crossing(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                        double tol, double wabs) {
+    /* the sides of each face: its arcs (both sides of every arc) and its edge */
+    uint32_t nf = P->n + 1; /* face P->n: the cap */
+    uint32_t *start = WK_NEW_ARRAY(R, uint32_t, nf + 1);
+    if (!start) return R->err.code;
+    for (uint32_t i = 0; i < S->n_arcs; i++) {
+        const wk_arc *c = &S->arcs[i];
+        start[c->left == WK_NONE ? P->n : c->left]++;
+        start[c->right == WK_NONE ? P->n : c->right]++;
+    }
+    for (uint32_t e = 0; e < P->n; e++) start[e]++;
+    uint32_t maxk = 0;
+    for (uint32_t f = 0, acc = 0; f <= nf; f++) {
+        uint32_t c = f < nf ? start[f] : 0;
+        if (c > maxk) maxk = c;
+        start[f] = acc;
+        acc += c;
+    }
+    uint32_t *ids = WK_NEW_ARRAY(R, uint32_t, start[nf] + 1);
+    uint32_t *fill = WK_NEW_ARRAY(R, uint32_t, nf + 1);
+    side2 *sd = WK_NEW_ARRAY(R, side2, maxk + 1);
+    wk_status st = WK_OK;
+    if (!ids || !fill || !sd) {
+        st = R->err.code;
+        goto done;
+    }
+    memcpy(fill, start, (nf + 1) * sizeof *fill);
+    for (uint32_t i = 0; i < S->n_arcs; i++) {
+        const wk_arc *c = &S->arcs[i];
+        ids[fill[c->left == WK_NONE ? P->n : c->left]++] = i;
+        ids[fill[c->right == WK_NONE ? P->n : c->right]++] = i;
+    }
+    for (uint32_t e = 0; e < P->n; e++) ids[fill[e]++] = S->n_arcs + e;
+    for (uint32_t f = 0; f < nf && st == WK_OK; f++) {
+        uint32_t face = f == P->n ? WK_NONE : f;
+        size_t k = 0;
+        for (uint32_t i = start[f]; i < start[f + 1]; i++) {
+            uint32_t a, b;
+            if (ids[i] >= S->n_arcs) {
+                a = ids[i] - S->n_arcs;
+                b = wk_polygon_next(P, a);
+            } else {
+                a = S->arcs[ids[i]].a;
+                b = S->arcs[ids[i]].b;
+            }
+            sd[k++] = (side2){in_plane(P, S, face, a, wabs), in_plane(P, S, face, b, wabs), a, b,
+                              ids[i]};
+        }
+        st = check_sides(R, P, S, face, sd, k, tol, wabs);
+    }
+done:
+    WK_FREE_ARRAY(R, ids, start[nf] + 1);
+    WK_FREE_ARRAY(R, fill, nf + 1);
+    WK_FREE_ARRAY(R, sd, maxk + 1);
+    WK_FREE_ARRAY(R, start, nf + 1);
+    return st;
 }
 
 wk_status wk_validate_general(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double tol,
@@ -126,5 +287,6 @@ wk_status wk_validate_general(wk_run *R, const wk_polygon *P, const wk_skeleton 
         }
     }
     WK_FREE_ARRAY(R, in, m);
+    if (st == WK_OK) st = check_no_self_crossing(R, P, S, tol, wabs);
     return st;
 }

@@ -243,6 +243,77 @@ static int ray_cmp(const void *x, const void *y) {
     return a->edge < b->edge ? -1 : a->edge > b->edge;
 }
 
+/* Two rays whose other ends are one point: the same event point, or the
+** same untouched vertex (its two pieces both run to X). */
+static bool same_far_end(const df_ray *a, const df_ray *b) {
+    return (a->far_k != WK_NONE && a->far_k == b->far_k) ||
+           (a->far_vertex != WK_NONE && a->far_vertex == b->far_vertex);
+}
+
+/* Where P lies from the piece of ray Y's edge at te: > 0 counter-clockwise
+** of the ray (its left), < 0 clockwise, 0 within rounding (WK_BEHIND_ULPS
+** ulps of the terms). */
+static int side_of_ray_line(const df_state *D, const df_ray *Y, wk_point P, double te) {
+    const wk_offset_line *L = &D->L[Y->edge];
+    double d = L->nx * P.x + L->ny * P.y - L->c - L->w * te;
+    double ulp = DBL_EPSILON * (fabs(L->nx * P.x) + fabs(L->ny * P.y) + fabs(L->c) +
+                                fabs(L->w * te));
+    if (fabs(d) <= WK_BEHIND_ULPS * ulp) return 0;
+    return (d > 0) == (Y->out != 0) ? 1 : -1;
+}
+
+/* Two rays of one point that run to one far end (an untouched vertex or
+** another event point) within WK_CANCEL_SIN are the two sides of a sliver
+** between X and that end P: nothing lies between them, whatever their
+** directions say.  Where other rays sort between them (their directions
+** lie inside the sliver's), the sliver goes before all of them if P lies
+** clockwise of each one's line at te, after all of them if
+** counter-clockwise (else the order stays: WK_EALGO if it does not
+** alternate).  The lines are what count, not the directions: X stands for
+** an event point up to the contact distance wide, and lines that pass it
+** that far apart keep their order over the sliver's length.  Found by the
+** variants fuzz target: a monotone 48-gon with needles 3.2e8, 1e6 and
+** 4.3e12 long (eps_d 4300, the body of the polygon 2000 across): the body
+** collapses at one point, the 1e6 needle's sides leave it 8.9e-5 apart in
+** direction, the 4.3e12 needle's between them (its lines 300 .. 450 west
+** of the short needle's tip); sorted by direction the short needle's sides
+** paired with the long one's (a cycle through the point twice, then a
+** skeleton with a cycle: the reference answered), or two pieces left the
+** point side by side
+** (tests/data/fuzz/mismatch_deforming_monotone_spike_3e8.wpoly).
+** Returns true if a ray's angle changed (sort again). */
+static bool place_slivers(df_state *D, double te) {
+    struct df_resolve_scratch *S = D->rs;
+    bool moved = false;
+    for (uint32_t a = 0; a < S->n_r; a++) {
+        for (uint32_t b = a + 2; b < S->n_r && S->rays[b].k == S->rays[a].k; b++) {
+            if (S->rays[b].angle - S->rays[a].angle > WK_CANCEL_SIN) break; /* sorted */
+            if (!same_far_end(&S->rays[a], &S->rays[b])) continue;
+            wk_point P = S->rays[a].far_vertex != WK_NONE
+                             ? df_pos(&D->v[S->rays[a].far_vertex], te)
+                             : S->cx[S->rays[a].far_k];
+            int cw = 0, ccw = 0;
+            for (uint32_t m = a + 1; m < b; m++) {
+                if (same_far_end(&S->rays[m], &S->rays[a])) break;
+                int side = side_of_ray_line(D, &S->rays[m], P, te);
+                cw += side < 0;
+                ccw += side > 0;
+            }
+            if (cw == (int)(b - a - 1)) {
+                double to = nextafter(S->rays[a].angle, -INFINITY);
+                S->rays[a].angle = S->rays[b].angle = to;
+                moved = true;
+            } else if (ccw == (int)(b - a - 1)) {
+                double to = nextafter(S->rays[b].angle, INFINITY);
+                S->rays[a].angle = S->rays[b].angle = to;
+                moved = true;
+            }
+            break;
+        }
+    }
+    return moved;
+}
+
 /* Cut the piece a -> next(a) at its event points and make its rays. */
 static wk_status cut_piece(df_state *D, uint32_t a, double te) {
     struct df_resolve_scratch *S = D->rs;
@@ -897,7 +968,7 @@ static wk_status resolve(df_state *D, double te) {
         uint32_t j = i;
         while (j < S->n_r && S->rays[j].k == S->rays[i - 1].k &&
                (S->rays[j].angle - S->rays[i - 1].angle <= WK_PARALLEL_SIN ||
-                (S->rays[j].far_k != WK_NONE && S->rays[j].far_k == S->rays[i - 1].far_k &&
+                (same_far_end(&S->rays[j], &S->rays[i - 1]) &&
                  S->rays[j].angle - S->rays[i - 1].angle <= WK_CANCEL_SIN))) {
             runs |= S->rays[j].angle != S->rays[i - 1].angle;
             S->rays[j].angle = S->rays[i - 1].angle;
@@ -906,6 +977,7 @@ static wk_status resolve(df_state *D, double te) {
         if (j > i) i = j - 1;
     }
     if (runs) qsort(S->rays, S->n_r, sizeof *S->rays, ray_cmp);
+    if (place_slivers(D, te)) qsort(S->rays, S->n_r, sizeof *S->rays, ray_cmp);
     if (WK_GROW(R, S->cuts, S->cap_cuts, S->n_r / 2 + 1) != WK_OK) return R->err.code;
     uint32_t *where = WK_NEW_ARRAY(R, uint32_t, S->n_r + 1);
     if (!where) return R->err.code;
