@@ -399,7 +399,10 @@
 ** and taking it keeps later events on the input lines.  WK_MONO_EXACT_SLACK
 ** (a multiple of eps_d): 1e3, the validator's default tolerance
 ** (WK_VALIDATE_TOL_REL), so a snap never moves a point by more than the
-** validator would accept.  The collapse window is WK_REFINE_TIME_SLACK *
+** validator would accept (except along M''s ray and the crossed trace when
+** the meeting point lies within eps_d of both lines: their crossing at a
+** small angle is then placed along them by rounding alone, merge.c
+** on_both_lines).  The collapse window is WK_REFINE_TIME_SLACK *
 ** eps_t and WK_REFINE_DIST_SLACK * eps_d * (1 + speed), as the wavefront's
 ** refine, plus WK_MONO_REFINE_AGE_REL times the vertex's age (time since its
 ** birth; times (1 + speed) for the distance): the drift of the

@@ -313,6 +313,50 @@ static bool snap_keeps_order(const walk *W, const hit *best, wk_point X, wk_poin
     return other.chain == WK_NONE;
 }
 
+/* Is q, the meeting point of the three offset lines, on the ray's line and
+** on the crossed trace's line (within eps_d of each, and within the trace's
+** extent), however far along them from the crossing X the walk computed?
+** Then X and q are the same crossing, and X's place along the ray is
+** decided by rounding: where the ray and the trace are nearly parallel, a
+** perpendicular error e moves their crossing by e / sin(angle) along them.
+** A fuzz finding: a 12-gon near x = 1e6, 1e6 tall and a few units wide
+** (tests/data/fuzz/mismatch_monotone_thin_wedge_1e6.wpoly), whose M'
+** between faces 0 and 10 crosses the trace of the 2e-6 rad spike vertex 0 (speed 1e6) at an angle
+** of 1e-6 rad: X came out 1.005 from q along both (q 1e-6 off the ray's
+** line, 1e-8 off the trace's; 60-digit arithmetic agrees with q), above
+** WK_MONO_EXACT_SLACK * eps_d = 1.0, so the node stayed 1e-6 off in time,
+** 1 unit off in place: a skeleton the validator accepts but not naive's
+** (nor arrangement's, motorcycle's, deforming's).  snap_keeps_order still
+** checks that no other wall lies between X and q.  *mu: q's distance along
+** the trace (the crossing's place on it for the assembly, which orders the
+** crossings of a trace by it). */
+static bool on_both_lines(const walk *W, const hit *best, wk_point q, double *mu) {
+    const mono *M = W->M;
+    const mono_chain *C = &M->ch[best->chain];
+    const mono_trace *T = &C->v[best->trace];
+    if (T->flat) return false;
+    wk_point A = C->node[T->start].p, D;
+    double len;
+    if (T->end == WK_NONE) {
+        double s = hypot(T->vel.x, T->vel.y);
+        if (!(s > 0)) return false;
+        D = (wk_point){T->vel.x / s, T->vel.y / s};
+        len = INFINITY;
+    } else {
+        D = sub(C->node[T->end].p, A);
+        len = hypot(D.x, D.y);
+        if (!(len > M->eps_d)) return false;
+        D.x /= len, D.y /= len;
+    }
+    wk_point Aq = sub(q, A), Pq = sub(q, W->p);
+    double m = dot(Aq, D);
+    if (!(fabs(cross(W->dir, Pq)) <= M->eps_d && fabs(cross(D, Aq)) <= M->eps_d &&
+          m >= -M->eps_d && m <= len + M->eps_d))
+        return false;
+    *mu = m < 0 ? 0 : m > len ? len : m;
+    return true;
+}
+
 static wk_status add_mnode(mono *M, wk_point p, double t, uint32_t sk, uint32_t *id) {
     if (WK_GROW(M->R, M->mn, M->cap_mn, M->n_mn + 1) != WK_OK) return M->R->err.code;
     memset(&M->mn[M->n_mn], 0, sizeof M->mn[0]);
@@ -406,12 +450,14 @@ wk_status wk_mono_merge(mono *M) {
         wk_point X = {W.p.x + best.lambda * dir.x, W.p.y + best.lambda * dir.y};
         double t = 0.5 * (level(Lu, X) + level(Lb, X));
         wk_point q;
-        double tq;
-        if (wk_three_lines_meet(Lu, Lb, &M->L[best.face], &q, &tq) &&
-            hypot(q.x - X.x, q.y - X.y) <= WK_MONO_EXACT_SLACK * M->eps_d && tq >= 0 &&
+        double tq, mu_q = best.mu;
+        if (wk_three_lines_meet(Lu, Lb, &M->L[best.face], &q, &tq) && tq >= 0 &&
+            (hypot(q.x - X.x, q.y - X.y) <= WK_MONO_EXACT_SLACK * M->eps_d ||
+             on_both_lines(&W, &best, q, &mu_q)) &&
             snap_keeps_order(&W, &best, X, q)) {
             X = q;
             t = tq;
+            best.mu = mu_q;
         }
         if (hypot(X.x - W.p.x, X.y - W.p.y) > M->eps_d) {
             uint32_t m;
