@@ -711,23 +711,6 @@ static const char *side_name(const face_ctx *F, uint32_t s, char *buf, size_t si
     return buf;
 }
 
-/* Length of the common part of two collinear segments. */
-static double overlap_length(wk_point a, wk_point b, wk_point c, wk_point d) {
-    double dx = b.x - a.x, dy = b.y - a.y;
-    if (fabs(dx) < fabs(d.x - c.x) || fabs(dy) < fabs(d.y - c.y)) {
-        dx = d.x - c.x;
-        dy = d.y - c.y;
-    }
-    double len = hypot(dx, dy);
-    if (!(len > 0)) return 0.0;
-    dx /= len;
-    dy /= len;
-    double a0 = a.x * dx + a.y * dy, a1 = b.x * dx + b.y * dy;
-    double c0 = c.x * dx + c.y * dy, c1 = d.x * dx + d.y * dy;
-    double lo = fmax(fmin(a0, a1), fmin(c0, c1)), hi = fmin(fmax(a0, a1), fmax(c0, c1));
-    return hi > lo ? hi - lo : 0.0;
-}
-
 /* Test sides i and j of the face; adjacent sides may only share their node. */
 static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j) {
     /* a bridge is no part of the skeleton: the two sides of one overlap by
@@ -770,7 +753,7 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
         double du = fabs((q.x - p.x) * (u.y - p.y) - (q.y - p.y) * (u.x - p.x)) / len;
         double dv = fabs((q.x - p.x) * (v.y - p.y) - (q.y - p.y) * (v.x - p.x)) / len;
         if (du <= ftol && dv <= ftol) {
-            double ov = overlap_length(a, b, c, d);
+            double ov = wk_collinear_overlap(a, b, c, d);
             if (ov > F->tol)
                 return WK_FAIL(R, WK_EINVALID, F->P->name, 0,
                                "validate (f): the face of edge %u is not simple: %s and %s "
@@ -793,7 +776,7 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
                        a.x + u * (b.x - a.x), a.y + u * (b.y - a.y));
     }
     if (m == WK_SEG_OVERLAP) {
-        double len = overlap_length(a, b, c, d);
+        double len = wk_collinear_overlap(a, b, c, d);
         if (len <= F->tol || at_boundary) return WK_OK;
         return WK_FAIL(R, WK_EINVALID, F->P->name, 0,
                        "validate (f): the face of edge %u is not simple: %s and %s overlap "

@@ -80,23 +80,6 @@ static double seg_point_dist(wk_point p, wk_point q, wk_point z) {
     return hypot(z.x - (p.x + u * dx), z.y - (p.y + u * dy));
 }
 
-/* Length of the common part of two collinear segments. */
-static double common_length(wk_point a, wk_point b, wk_point c, wk_point d) {
-    double dx = b.x - a.x, dy = b.y - a.y;
-    if (hypot(dx, dy) < hypot(d.x - c.x, d.y - c.y)) {
-        dx = d.x - c.x;
-        dy = d.y - c.y;
-    }
-    double len = hypot(dx, dy);
-    if (!(len > 0)) return 0.0;
-    dx /= len;
-    dy /= len;
-    double a0 = a.x * dx + a.y * dy, a1 = b.x * dx + b.y * dy;
-    double c0 = c.x * dx + c.y * dy, c1 = d.x * dx + d.y * dy;
-    double lo = fmax(fmin(a0, a1), fmin(c0, c1)), hi = fmin(fmax(a0, a1), fmax(c0, c1));
-    return hi > lo ? hi - lo : 0.0;
-}
-
 static const char *side2_name(const wk_skeleton *S, const side2 *x, char *buf, size_t size) {
     if (x->what >= S->n_arcs) snprintf(buf, size, "edge %u", x->what - S->n_arcs);
     else snprintf(buf, size, "arc %u [%u, %u]", x->what, x->na, x->nb);
@@ -133,7 +116,7 @@ static wk_status check_sides(wk_run *R, const wk_polygon *P, const wk_skeleton *
                 near = fmin(fmin(seg_point_dist(y->a, y->b, x->a), seg_point_dist(y->a, y->b, x->b)),
                             fmin(seg_point_dist(x->a, x->b, y->a), seg_point_dist(x->a, x->b, y->b)));
             else if (m == WK_SEG_OVERLAP && !still)
-                near = common_length(x->a, x->b, y->a, y->b);
+                near = wk_collinear_overlap(x->a, x->b, y->a, y->b);
             if (near > tol) {
                 char what[32];
                 if (f == WK_NONE) snprintf(what, sizeof what, "the cap");

@@ -2,11 +2,13 @@
 ** validate_internal.h: what the validators for capped roofs
 ** (validate_general.c) and for PSLGs (validate_pslg.c) share: stage (c),
 ** every arc end on the offset lines of both of the arc's faces, and each
-** arc from an input vertex along its bisector (validate.c too).
+** arc from an input vertex along its bisector, and the overlap of collinear
+** face sides (validate.c uses both too).
 */
 #ifndef WK_VALIDATE_INTERNAL_H
 #define WK_VALIDATE_INTERNAL_H
 
+#include <math.h>
 #include "wskel.h"
 
 /* Signed distance of (x, y) from edge e's supporting line, positive on the
@@ -33,5 +35,24 @@ wk_status wk_validate_arc_ends(wk_run *R, const wk_polygon *P, const wk_skeleton
 ** arc's direction).  Polygons only (P's rings give v's edges). */
 wk_status wk_validate_arc_bisector(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                                    uint32_t i, double tol, const char *name, const char *stage);
+
+/* Length of the common part of two collinear segments a-b and c-d (both
+** validators' face tests: sides that run along each other), measured along
+** the direction of the one with the larger coordinate extents. */
+static inline double wk_collinear_overlap(wk_point a, wk_point b, wk_point c, wk_point d) {
+    double dx = b.x - a.x, dy = b.y - a.y;
+    if (fabs(dx) < fabs(d.x - c.x) || fabs(dy) < fabs(d.y - c.y)) {
+        dx = d.x - c.x;
+        dy = d.y - c.y;
+    }
+    double len = hypot(dx, dy);
+    if (!(len > 0)) return 0.0;
+    dx /= len;
+    dy /= len;
+    double a0 = a.x * dx + a.y * dy, a1 = b.x * dx + b.y * dy;
+    double c0 = c.x * dx + c.y * dy, c1 = d.x * dx + d.y * dy;
+    double lo = fmax(fmin(a0, a1), fmin(c0, c1)), hi = fmin(fmax(a0, a1), fmax(c0, c1));
+    return hi > lo ? hi - lo : 0.0;
+}
 
 #endif
