@@ -396,9 +396,10 @@ wk_status wk_validate_pslg(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
             goto done;
         }
     }
-    /* (g) */
+    /* (g) the polygon validator's area tolerance (tolerance.h), named there
+    ** rather than a literal here so the one policy holds for PSLGs too */
     rep->area_error = fabs(face_area - cap_sum);
-    if (rep->area_error > 1e-6 * fabs(cap_sum) + tol * cap_len)
+    if (rep->area_error > WK_VALIDATE_AREA_REL * fabs(cap_sum) + tol * cap_len)
         st = WK_FAIL(R, WK_EINVALID, name, 0,
                      "validate (pslg g): the faces' areas sum to %.17g, the cap encloses %.17g",
                      face_area, cap_sum);

@@ -584,6 +584,29 @@ def test_compare_skeletons_time_tolerance_is_weight_aware():
     assert not cs.compare(a, split((tol / 2) / w), weights=[1.0] * 4).identical
 
 
+def test_compare_skeletons_chained_merge_is_not_a_time_mismatch():
+    """A merged node may chain nodes far more than tol apart (each within tol
+    of the next); its members' times then differ by up to their spread over
+    the weight, and a skeleton compared with itself must be identical.  The
+    case (audit of issue 11): a radius-1000 16-gon with vertex 1 pulled out
+    to x = 4e9, naive's skeleton: tol 400 merges 17 nodes over 2000 units,
+    t from 0 to 474; before, compare(a, a) said DIFFERENT."""
+    import compare_skeletons as cs
+    a = {"format": "wskel-1", "n": 16, "r": 2, "rings": [16],
+         "nodes": [[1000, 0, 0], [4000000000, 382.6834323650898, 0], [707.1067811865476, 707.1067811865474, 0], [382.68343236508986, 923.8795325112867, 0], [6.123233995736766e-14, 1000, 0], [-382.68343236508974, 923.8795325112867, 0], [-707.1067811865474, 707.1067811865476, 0], [-923.8795325112867, 382.6834323650899, 0], [-1000, 1.2246467991473532e-13, 0], [-923.8795325112868, -382.6834323650897, 0], [-707.1067811865477, -707.1067811865474, 0], [-382.6834323650903, -923.8795325112865, 0], [-1.8369701987210297e-13, -1000, 0], [382.68343236509, -923.8795325112866, 0], [707.1067811865473, -707.1067811865477, 0], [923.8795325112865, -382.68343236509037, 0], [709.846214056015, 353.5533766025476, 353.5534043618146], [563.3995974063873, 233.367754325643, 473.739038516197], [0, 1.333736175840638e-09, 980.7852804015932]],
+         "arcs": [[0, 16, 15, 0], [1, 16, 0, 1], [16, 17, 15, 1], [2, 17, 1, 2], [7, 18, 6, 7], [6, 18, 5, 6], [8, 18, 7, 8], [5, 18, 4, 5], [9, 18, 8, 9], [4, 18, 3, 4], [10, 18, 9, 10], [3, 18, 2, 3], [15, 18, 14, 15], [14, 18, 13, 14], [17, 18, 15, 2], [13, 18, 12, 13], [12, 18, 11, 12], [11, 18, 10, 11]]}
+    same = cs.compare(a, a)
+    assert same.identical, same.summary() + "\n" + "\n".join(same.details())
+    assert same.counts["merged_a"] < 19, same.summary()  # the chain did merge
+    # a time off by more than the spread explains (2000 units at weight 1) is
+    # still a mismatch; the weights are given, since read off the skeleton a
+    # wrong t makes its face look slow and the tolerance grow with it
+    b = json.loads(json.dumps(a))
+    b["nodes"][17][2] += 5000.0
+    off = cs.compare(a, b, weights=[1.0] * 16)
+    assert not off.identical and off.time_mismatches, off.summary()
+
+
 def test_gen_pslg_deterministic_and_non_crossing():
     """scripts/gen_pslg.py: the same N and seed give the same segments, a
     new seed others; no two segments cross or come within the clearance
