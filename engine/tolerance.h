@@ -259,6 +259,21 @@
 ** any crash that the listed cell can matter for, so a trace is always
 ** listed before it can stop there. */
 #define WK_MCG_GRID_DELTA 4.0
+/* That grid's cells keep each listed trace's line rounded to floats (in
+** the cell's frame), and a scan passes a listed trace that has not stopped
+** to the full pair test only when the rounded lines cross within a margin
+** of the cell: WK_MCG_SHORTLIST_REL (rho + delta) + delta +
+** WK_MCG_SHORTLIST_EXT * (the box's extent), over |det|.  Float rounding
+** moves a line by about 2e-7 (rho + delta) in the cell, so REL keeps 5
+** times that; EXT covers the rounding of the full test's crossing and of
+** its cell lookup (ulps of the box's coordinates); below
+** WK_MCG_SHORTLIST_SIN (about 6 float rounding errors of the 2x2
+** determinant) the pair always gets the full test.  Not a tolerance of the
+** graph: a wider margin only passes more pairs to the full test, which
+** decides as before, so the graph and every event are the same. */
+#define WK_MCG_SHORTLIST_REL 1e-6
+#define WK_MCG_SHORTLIST_EXT 1e-12
+#define WK_MCG_SHORTLIST_SIN 1e-6
 /* The consistency check of that graph (tests, debug) accepts a stop point
 ** within this many eps_d (per member of a simultaneous group, whose members
 ** join pairwise within eps_d) of the wall or trace it stops at, and times

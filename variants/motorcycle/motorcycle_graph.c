@@ -58,6 +58,19 @@
 ** at 1, 89M at 16). */
 #define MCG_REFINE_OCCUPANCY 0.25
 #define MCG_REFINE_MAX 16.0
+/* Spread origins (an occupancy of at least MCG_REFINE_OCCUPANCY on a grid
+** of one cell per motorcycle, the rule's first calibration: star and
+** random, 0.34) get this coarser grid instead.  Their needle notches send
+** long traces across the box into a hub, each listed in about sqrt(cells)
+** cells, and since the scans' shortlist (short_skip) the pairs are cheap
+** while each listing (a heap event, the cell's index walked bin by bin,
+** its arrays cold) is not.  Measured (session mchub3, CPU time of the
+** simulation, star n = 10^5, seed 1, load 10-12, +-30%): 0.43 cells per
+** motorcycle (the refined 0.1) 2.5-4.9 s, 0.1 1.6-2.9 s, 0.03 1.1-1.8 s;
+** random 3.4, 2.0, 1.8 s.  The clustered families (coastline, monotone,
+** comb, notched: 0.03 to 0.08 on that grid) keep their refined grid:
+** coastline 0.35 s refined, 1.2 s at 0.1, 1.9 s at 0.03. */
+#define MCG_CELLS_PER_MOTORCYCLE_SPREAD 0.03
 /* A cell listing this many motorcycles gets an index of their lines (and
 ** a new one each time the count doubles).  Not a tolerance: below it a
 ** scan of the cell's array is as cheap. */
@@ -152,9 +165,19 @@ typedef struct geo {
 ** cell_scan and line_key): bucket (b, c) chains, through line[].next, the
 ** lines of canonical angle bin b (bmin[b] .. bmax[b] their actual angles)
 ** and offset bin c. */
+/* A listing: the motorcycle's id and its line in the cell's frame, rounded
+** to floats: n . (p - C) = c, n = (-u.y, u.x), C the cell's centre, and
+** s = u . (C - o), the distance along u of C's foot (see short_skip: a scan
+** decides most pairs from these 20 bytes, read in sequence, and the crash
+** length, instead of loading geo[id] at random). */
+typedef struct lrec {
+    float nx, ny, c, s;
+    uint32_t id;
+} lrec;
+
 typedef struct ix_line {
     uint32_t next;
-    uint32_t id; /* L->e[k], beside next: a chain walk reads one array */
+    lrec rec; /* L->e[k], beside next: a chain walk reads one array */
 } ix_line;
 
 typedef struct cell_index {
@@ -177,7 +200,7 @@ typedef struct cell_index {
 } cell_index;
 
 typedef struct cell_list {
-    uint32_t *e; /* ids */
+    lrec *e; /* the listings, in order */
     uint32_t n, cap;
     cell_index *ix; /* NULL below MCG_INDEX_MIN lines and in the outer cells */
 } cell_list;
@@ -200,6 +223,7 @@ typedef struct sim {
     uint32_t nc[2];        /* columns, rows */
     cell_list *cells;      /* nc[0] * nc[1]: the motorcycles listed there */
     geo *geo;              /* r */
+    double *clen;          /* r: geo[i].clen, compact (short_skip) */
     uint64_t n_listed;
     uint32_t *slab;        /* r: next slab along the major axis */
     uint32_t *slab_end;    /* r: last slab (inclusive) */
@@ -282,7 +306,7 @@ static void crash_trace(sim *S, uint32_t l, double dl, uint32_t w, double dw) {
     wk_motorcycle *m = &S->m[l];
     S->crashed[l] = 1;
     m->len = dl;
-    if (S->geo) S->geo[l].clen = dl;
+    if (S->geo) S->geo[l].clen = S->clen[l] = dl;
     m->kind = WK_MCG_TRACE;
     m->other = w;
     m->other_len = dw;
@@ -316,7 +340,7 @@ static void join(sim *S, uint32_t g, uint32_t i, double d) {
     if (!S->crashed[i]) {
         S->crashed[i] = 1;
         m->len = d;
-        if (S->geo) S->geo[i].clen = d;
+        if (S->geo) S->geo[i].clen = S->clen[i] = d;
     } else if (m->kind == WK_MCG_TRACE && G->on_other == WK_NONE) {
         G->on_other = m->other;
         G->on_len = m->other_len;
@@ -563,12 +587,12 @@ static wk_status index_add(sim *S, cell_list *L, uint32_t k) {
         X->cap = cap;
     }
     double th, h;
-    line_key(&S->geo[L->e[k]], X->cx, X->cy, &th, &h);
+    line_key(&S->geo[L->e[k].id], X->cx, X->cy, &th, &h);
     uint32_t b = bin_of(th, X->th0, X->dth, X->gt);
     uint32_t c = bin_of(h, -X->rho, 2.0 * X->rho / X->gh, X->gh);
     X->line[k] = (ix_line){X->head[b * X->gh + c], L->e[k]};
     X->head[b * X->gh + c] = k;
-    const geo *g = &S->geo[L->e[k]];
+    const geo *g = &S->geo[L->e[k].id];
     double hp = fabs(g->u.x * (X->py - g->o.y) - g->u.y * (X->px - g->o.x));
     if (hp > X->hmax[b]) X->hmax[b] = hp;
     if (c < X->cmin[b]) X->cmin[b] = c;
@@ -598,7 +622,7 @@ static void hub_point(const sim *S, const cell_list *L, cell_index *X) {
     X->py = X->cy;
     double a00 = 0, a01 = 0, a11 = 0, b0 = 0, b1 = 0;
     for (uint32_t k = 0; k < L->n; k++) {
-        const geo *g = &S->geo[L->e[k]];
+        const geo *g = &S->geo[L->e[k].id];
         double nx = -g->u.y, ny = g->u.x;
         double c = nx * (g->o.x - X->cx) + ny * (g->o.y - X->cy);
         a00 += nx * nx;
@@ -650,7 +674,7 @@ static wk_status index_build(sim *S, cell_list *L, uint32_t cell) {
     double lo = INFINITY, hi = -INFINITY;
     for (uint32_t k = 0; k < L->n; k++) {
         double th, h;
-        line_key(&S->geo[L->e[k]], X->cx, X->cy, &th, &h);
+        line_key(&S->geo[L->e[k].id], X->cx, X->cy, &th, &h);
         lo = th < lo ? th : lo;
         hi = th > hi ? th : hi;
     }
@@ -679,11 +703,91 @@ static wk_status index_build(sim *S, cell_list *L, uint32_t cell) {
         if (k == WK_NONE) continue;
         X->head[q] = pos;
         for (; k != WK_NONE; k = X->line[k].next, pos++)
-            nl[pos] = (ix_line){X->line[k].next == WK_NONE ? WK_NONE : pos + 1, X->line[k].id};
+            nl[pos] = (ix_line){X->line[k].next == WK_NONE ? WK_NONE : pos + 1, X->line[k].rec};
     }
     WK_FREE_ARRAY(S->R, X->line, X->cap);
     X->line = nl;
     return WK_OK;
+}
+
+/* The centre of cell (col, row). */
+static inline void cell_centre(const sim *S, uint32_t cell, double *cx, double *cy) {
+    *cx = S->g0[0] + ((double)(cell % S->nc[0]) + 0.5) * S->cw[0];
+    *cy = S->g0[1] + ((double)(cell / S->nc[0]) + 0.5) * S->cw[1];
+}
+
+/* g's listing in the cell of centre (cx, cy). */
+static inline lrec listing(const geo *g, double cx, double cy) {
+    double nx = -g->u.y, ny = g->u.x;
+    return (lrec){(float)nx, (float)ny, (float)(nx * (g->o.x - cx) + ny * (g->o.y - cy)),
+                  (float)(g->u.x * (cx - g->o.x) + g->u.y * (cy - g->o.y)), g->id};
+}
+
+/* A scan's shortlist: the listing motorcycle's line n . q = c (q = p - C,
+** C the cell's centre, doubles), the cell's half sides, and the margin
+** numerator (see short_skip). */
+typedef struct shortlist {
+    bool on;
+    double nx, ny, c, s, hx, hy, margin;
+} shortlist;
+
+static void shortlist_start(const sim *S, uint32_t cell, const geo *gi, shortlist *F) {
+    uint32_t col = cell % S->nc[0], row = cell / S->nc[0];
+    *F = (shortlist){0};
+    /* the outer cells reach to infinity (grid_index clamps): never
+    ** shortlisted */
+    F->on = col > 0 && row > 0 && col + 1 < S->nc[0] && row + 1 < S->nc[1];
+    if (!F->on) return;
+    double cx, cy;
+    cell_centre(S, cell, &cx, &cy);
+    F->nx = -gi->u.y;
+    F->ny = gi->u.x;
+    F->c = F->nx * (gi->o.x - cx) + F->ny * (gi->o.y - cy);
+    F->s = gi->u.x * (cx - gi->o.x) + gi->u.y * (cy - gi->o.y);
+    F->hx = 0.5 * S->cw[0];
+    F->hy = 0.5 * S->cw[1];
+    double ext = fmax(fabs(S->g0[0]), fabs(S->g0[1])) +
+                 hypot(S->cw[0] * S->nc[0], S->cw[1] * S->nc[1]);
+    double rho = hypot(F->hx, F->hy);
+    F->margin = WK_MCG_SHORTLIST_REL * (rho + S->delta) + S->delta + WK_MCG_SHORTLIST_EXT * ext;
+}
+
+/* True when the pair of the scanning motorcycle and the listing r is a
+** no-op that test_pair would only count: it neither pushes the pair nor
+** sets a bound.  Decided from the rounded lines' crossing q (in the cell's
+** frame) and the listed motorcycle's crash length cl (S->clen):
+**   - q lies outside the cell by more than the margin and r's motorcycle
+**     has not crashed: then the computed crossing (meet_geo) does not lie
+**     in the cell (no push), and only a crashed listed trace sets a bound;
+**   - q lies more than the margin plus 2 eps_d beyond cl along r's line:
+**     r's motorcycle stopped before the crossing (BEFORE; or the crossing
+**     lies past r's wall and they do not meet), which pushes nothing and
+**     sets no bound, wherever q lies.
+** The margin: rounding to floats moves r's line by at most about
+** 2e-7 (|q| + rho + delta) near q (|dn| <= 8.4e-8, |dc| <= 6e-8 |c|, |c|
+** <= rho + delta for a line listed in the cell), so q by at most sqrt(2)
+** times that over |det| (det the 2x2 system's, of the rounded data: the
+** bound holds for the perturbed system's inverse); delta covers a
+** collinear pair's meeting point (within eps_d of both lines), the
+** WK_MCG_SHORTLIST_EXT term the rounding of meet_geo's crossing and of
+** cell_of (ulps of the box's coordinates over |sin D|); along r, s and u
+** add 6e-8 |s| and 8.4e-8 |q|.  WK_MCG_SHORTLIST_REL keeps 5 times those
+** factors.  |det| at or below WK_MCG_SHORTLIST_SIN: not decided here. */
+static inline bool short_skip(const sim *S, const shortlist *F, const geo *gi, const lrec *r) {
+    double nx = r->nx, ny = r->ny, c = r->c;
+    double det = F->nx * ny - F->ny * nx, ad = fabs(det);
+    if (!(ad > WK_MCG_SHORTLIST_SIN)) return false;
+    double qx = (F->c * ny - F->ny * c) / det, qy = (F->nx * c - nx * F->c) / det;
+    double qn = fabs(qx) + fabs(qy);
+    double eq = (F->margin + WK_MCG_SHORTLIST_REL * qn) / ad;
+    if (gi->bound < INFINITY) {
+        double di = F->s + F->ny * qx - F->nx * qy - eq;
+        if (fmin(di, gi->wall_len) > gi->bound + 2.0 * S->eps_d) return true;
+    }
+    double cl = S->clen[r->id];
+    if (cl == INFINITY) return !(fabs(qx) <= F->hx + eq && fabs(qy) <= F->hy + eq);
+    double s = r->s, t = s + ny * qx - nx * qy;
+    return t - (eq + WK_MCG_SHORTLIST_REL * (fabs(s) + qn)) > cl + 2.0 * S->eps_d;
 }
 
 /* Test gi against every motorcycle listed in L (cell `cell`), or, when L
@@ -716,9 +820,14 @@ static wk_status index_build(sim *S, cell_list *L, uint32_t cell) {
 ** the same graph). */
 static wk_status cell_scan(sim *S, cell_list *L, uint32_t cell, geo *gi) {
     cell_index *X = L->ix;
+    shortlist F;
+    shortlist_start(S, cell, gi, &F);
     if (!X) {
-        for (uint32_t e = 0; e < L->n; e++)
-            if (test_pair(S, gi, &S->geo[L->e[e]], cell) != WK_OK) return WK_ENOMEM;
+        for (uint32_t e = 0; e < L->n; e++) {
+            const lrec *r = &L->e[e];
+            if (F.on && short_skip(S, &F, gi, r)) continue;
+            if (test_pair(S, gi, &S->geo[r->id], cell) != WK_OK) return WK_ENOMEM;
+        }
         return WK_OK;
     }
     double ext = fmax(fabs(S->g0[0]), fabs(S->g0[1])) +
@@ -773,8 +882,11 @@ static wk_status cell_scan(sim *S, cell_list *L, uint32_t cell, geo *gi) {
         if (c0 < X->cmin[b]) c0 = X->cmin[b];
         if (c1 > X->cmax[b]) c1 = X->cmax[b];
         for (uint32_t c = c0; c <= c1; c++)
-            for (uint32_t k = X->head[b * X->gh + c]; k != WK_NONE; k = X->line[k].next)
-                if (test_pair(S, gi, &S->geo[X->line[k].id], cell) != WK_OK) return WK_ENOMEM;
+            for (uint32_t k = X->head[b * X->gh + c]; k != WK_NONE; k = X->line[k].next) {
+                const lrec *r = &X->line[k].rec;
+                if (F.on && short_skip(S, &F, gi, r)) continue;
+                if (test_pair(S, gi, &S->geo[r->id], cell) != WK_OK) return WK_ENOMEM;
+            }
     }
     return WK_OK;
 }
@@ -802,13 +914,14 @@ static wk_status process_registration(sim *S, uint32_t i) {
             if (L->cap >= UINT32_MAX / 2)
                 return WK_FAIL(S->R, WK_ENOMEM, NULL, 0, "too many motorcycles in a cell");
             uint32_t cap = L->cap ? 2 * L->cap : 2;
-            uint32_t *e =
-                wk_realloc(S->R, L->e, (size_t)L->cap * sizeof *e, (size_t)cap * sizeof *e);
+            lrec *e = wk_realloc(S->R, L->e, (size_t)L->cap * sizeof *e, (size_t)cap * sizeof *e);
             if (!e) return WK_ENOMEM;
             L->e = e;
             L->cap = cap;
         }
-        L->e[L->n++] = i;
+        double ccx, ccy;
+        cell_centre(S, cell, &ccx, &ccy);
+        L->e[L->n++] = listing(gi, ccx, ccy);
         S->n_listed++;
         if (L->ix && index_add(S, L, L->n - 1) != WK_OK) return WK_ENOMEM;
         if (L->n >= MCG_INDEX_MIN && L->n >= 2 * (L->ix ? L->ix->built : 0) &&
@@ -825,8 +938,9 @@ static wk_status process_registration(sim *S, uint32_t i) {
 ** MCG_REFINE_OCCUPANCY): the share of the cells of the coarse grid over the
 ** box (W x H from lo) that hold a motorcycle's origin, per motorcycle. */
 static wk_status origin_occupancy(sim *S, wk_point lo, double W, double H, double target,
-                                  double *refine) {
+                                  double *refine, double *occupancy) {
     *refine = 1.0;
+    *occupancy = -1.0;
     if (S->r < 64 || target < 1.0) return WK_OK;
     double cell = sqrt(W * H / target);
     double fx = ceil(W / cell), fy = ceil(H / cell);
@@ -849,6 +963,7 @@ static wk_status origin_occupancy(sim *S, wk_point lo, double W, double H, doubl
     }
     WK_FREE_ARRAY(S->R, occ, (size_t)nx * ny);
     double f = (double)k / S->r;
+    *occupancy = f;
     double q = MCG_REFINE_OCCUPANCY / f;
     *refine = q < 1.0 ? 1.0 : q > MCG_REFINE_MAX ? MCG_REFINE_MAX : q;
     return WK_OK;
@@ -861,9 +976,14 @@ static wk_status grid_start(sim *S, wk_point lo, wk_point hi) {
     double d = S->delta;
     double W = hi.x - lo.x + 2.0 * d, H = hi.y - lo.y + 2.0 * d;
     double target = MCG_CELLS_PER_MOTORCYCLE * (double)S->r;
-    double refine;
-    if (origin_occupancy(S, lo, W, H, target, &refine) != WK_OK) return WK_ENOMEM;
-    target *= refine;
+    double refine, f1, f;
+    if (origin_occupancy(S, lo, W, H, (double)S->r, &refine, &f1) != WK_OK) return WK_ENOMEM;
+    if (f1 >= MCG_REFINE_OCCUPANCY) {
+        target = MCG_CELLS_PER_MOTORCYCLE_SPREAD * (double)S->r;
+    } else {
+        if (origin_occupancy(S, lo, W, H, target, &refine, &f) != WK_OK) return WK_ENOMEM;
+        target *= refine;
+    }
     if (target < 1.0) target = 1.0;
     double cell = sqrt(W * H / target);
     double fx = ceil(W / cell), fy = ceil(H / cell);
@@ -879,10 +999,14 @@ static wk_status grid_start(sim *S, wk_point lo, wk_point hi) {
     uint32_t cells = S->nc[0] * S->nc[1];
     S->cells = WK_NEW_ARRAY(S->R, cell_list, cells);
     S->geo = WK_NEW_ARRAY(S->R, geo, S->r);
+    S->clen = WK_NEW_ARRAY(S->R, double, S->r);
     S->slab = WK_NEW_ARRAY(S->R, uint32_t, S->r);
     S->slab_end = WK_NEW_ARRAY(S->R, uint32_t, S->r);
-    if (!S->cells || !S->geo || !S->slab || !S->slab_end) return WK_ENOMEM;
-    for (uint32_t i = 0; i < S->r; i++) S->geo[i] = geo_of(S, i);
+    if (!S->cells || !S->geo || !S->clen || !S->slab || !S->slab_end) return WK_ENOMEM;
+    for (uint32_t i = 0; i < S->r; i++) {
+        S->geo[i] = geo_of(S, i);
+        S->clen[i] = INFINITY;
+    }
     /* The cells start empty: WK_NEW_ARRAY zeroes them ({NULL, 0, 0, NULL}),
     ** and a second pass over the refined grid (16 cells per motorcycle on a
     ** coastline) cost 1-2% of the run. */
@@ -938,6 +1062,7 @@ static void sim_clear(sim *S) {
         WK_FREE_ARRAY(R, S->cells, cells);
     }
     WK_FREE_ARRAY(R, S->geo, S->r);
+    WK_FREE_ARRAY(R, S->clen, S->r);
     WK_FREE_ARRAY(R, S->slab, S->r);
     WK_FREE_ARRAY(R, S->slab_end, S->r);
 }
