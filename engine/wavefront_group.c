@@ -783,8 +783,9 @@ static bool local_walk_suffices(wk_wavefront *W, double t) {
 ** of a needle 2e-6 wide, 1.2e-5 behind a non-adjacent edge across a crack
 ** outside the polygon, pinched that edge and closed a cycle
 ** (the fuzz finding of an H at 1e6 with needles 1e5..8e6 long, issue 11). */
-static bool node_behind_piece(const wk_wavefront *W, uint32_t k, const wk_offset_line *L,
-                              double off, wk_point q) {
+static bool node_behind_piece(const wk_wavefront *W, uint32_t k, uint32_t e, double off,
+                              wk_point q) {
+    const wk_offset_line *L = &W->L[e];
     double ulp = DBL_EPSILON * (fabs(q.x) + fabs(q.y));
     if (!(off < -WK_BEHIND_ULPS * ulp)) return false;
     bool any = false;
@@ -792,7 +793,11 @@ static bool node_behind_piece(const wk_wavefront *W, uint32_t k, const wk_offset
         const wk_wf_vertex *u = &W->v[W->comp[i]];
         if (u->at != k) continue;
         any = true;
-        if (L->nx * u->vel.x + L->ny * u->vel.y - L->w < 0) return false;
+        /* approaching from behind the line all along is not from its front:
+        ** an input vertex on the line's input edge's line, receding from it
+        ** (the H with needles of wf_never_reaches_line) */
+        if (L->nx * u->vel.x + L->ny * u->vel.y - L->w < 0 && !wf_never_reaches_line(W, W->comp[i], e))
+            return false;
     }
     return any;
 }
@@ -821,7 +826,7 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
             if (s < -W->eps_g || s > len + W->eps_g) continue;
             double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
             if (fabs(off) > W->eps_g) continue;
-            if (node_behind_piece(W, k, L, off, q)) continue;
+            if (node_behind_piece(W, k, A->eout, off, q)) continue;
             /* A node on the line within tolerance of an end of the piece: that
             ** end arrives at the node (else the node would touch the piece
             ** without cutting it, and the group would change nothing).  A
