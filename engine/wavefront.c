@@ -145,9 +145,21 @@ bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     const wk_offset_line *L = &W->L[e];
     /* exactly behind the input line (as wk_input_vertex_never_reaches_line), or behind another ring's edge line by
     ** more than rounding (behind_offset_line); either way not approaching it */
-    bool behind = wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) < 0 ||
-                  behind_offset_line(W, u, e);
-    return behind && L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w <= 0;
+    int o = wk_orient2d_counted(W->R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]);
+    double rate = L->nx * W->v[u].vel.x + L->ny * W->v[u].vel.y - L->w;
+    if (o < 0 || behind_offset_line(W, u, e)) return rate <= 0;
+    /* exactly on the input line (not one of u's own edges) and receding from
+    ** it by more than its rounding (WK_SPLIT_SIDE_ULPS ulps of u's speed s,
+    ** counted as s + s^2 / w as in behind_offset_line): behind it at every
+    ** t > 0.  An H with needles whose edges 3 and 7 are collinear and
+    ** antiparallel, 4 apart: reflex vertex 3 (speed 5e5) split edge 6
+    ** 1.6e-5 behind edge 7's line, node_behind_piece took it for a vertex
+    ** from the line's front, the node pinched edge 7 and the skeleton
+    ** closed a cycle (exit 3; tests/data/fuzz/invalid_naive_h_needles_pass_by.wpoly) */
+    if (o != 0 || e == W->v[u].ein || e == W->v[u].eout) return false;
+    double sp = fabs(W->v[u].vel.x) + fabs(W->v[u].vel.y);
+    double wu = fmin(W->L[W->v[u].ein].w, W->L[W->v[u].eout].w);
+    return rate < -WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (sp + sp * sp / wu + L->w);
 }
 
 bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t u, wk_point vel,

@@ -145,6 +145,51 @@ static uint32_t find_cluster_within(wk_wavefront *W, wk_point p, double r) {
     return k_best;
 }
 
+/* The node within r of p (a vertex's place at the group's time t) that
+** the vertex, moving at vel, passes nearest over the group's time span
+** (t .. t + dt; plan_arrivals calls it for a vertex moving more than eps_g
+** in it, find_cluster_within otherwise): a vertex
+** that moves more than eps_g in that span is judged by its track, not by
+** its place at t.  Candidates are the same as find_cluster_within's; the
+** distance of node q is |q - c| for the point c of the track
+** p + vel h, h in [0, dt], nearest to q; distances within eps_g of each
+** other count as equal, and then the node reached first (smaller h) wins:
+** the needle tip above has both nodes on its track and must stop at the
+** first, the collapse of its own triangle (needle_tip_nearest_node.wpoly
+** still passes).  Nearest to p picked the wrong node for a
+** spike vertex of speed 1.6e8 (a weighted comb with one vertex 2.5e9
+** away): at t it was 220 units beside an edge event's node and 510 units
+** before the node of its own collapse, which it reached at the end of the
+** span (3.2e-6 later); sent to the edge event, the skeleton closed a cycle
+** (exit 3; the six comb_spike files of tests/data/fuzz). */
+static uint32_t find_cluster_on_track(wk_wavefront *W, wk_point p, wk_point vel, double dt,
+                                      double r) {
+    double best_d = INFINITY, best_h = INFINITY, best_a = INFINITY, r2 = r * r, e = W->eps_g;
+    double v2 = vel.x * vel.x + vel.y * vel.y;
+    uint32_t k_best = WK_NONE;
+    bool listed = near_nodes(W, p, p, r);
+    uint32_t n = listed ? W->cg.n_out : W->n_cl;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t k = listed ? W->cg.out[i] : i;
+        wk_point q = W->cl[k].p;
+        double a2 = wf_dist2(q, p);
+        if (a2 > r2) continue;
+        double h = v2 > 0 ? ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2 : 0;
+        h = fmin(fmax(h, 0), dt);
+        wk_point c = {p.x + vel.x * h, p.y + vel.y * h};
+        double d = sqrt(wf_dist2(q, c));
+        bool better = d < best_d - e ||
+                      (d <= best_d + e && (h < best_h || (h == best_h && a2 <= best_a)));
+        if (better) {
+            best_d = d;
+            best_h = h;
+            best_a = a2;
+            k_best = k;
+        }
+    }
+    return k_best;
+}
+
 /* The first node within eps_g of p, WK_NONE if there is none. */
 static uint32_t find_cluster(wk_wavefront *W, wk_point p) {
     double e2 = W->eps_g * W->eps_g;
@@ -665,9 +710,10 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
         ** close to a node arrives there in the same instant.  Not |vel|
         ** eps_t: a reflex vertex of speed 4e5 then arrived at a node 2.4
         ** units away, in a group of one event (the same H with needles) */
-        double speed = fabs(u->vel.x) + fabs(u->vel.y);
-        u->at = find_cluster_within(W, wk_wf_pos(u, t),
-                                    W->eps_g + speed * (W->t_last - t) * (W->eps_g / W->eps_d));
+        double speed = fabs(u->vel.x) + fabs(u->vel.y), dt = W->t_last - t;
+        double r = W->eps_g + speed * dt * (W->eps_g / W->eps_d);
+        u->at = speed * dt > W->eps_g ? find_cluster_on_track(W, wk_wf_pos(u, t), u->vel, dt, r)
+                                      : find_cluster_within(W, wk_wf_pos(u, t), r);
         if (u->at != WK_NONE && W->n_shield && shield_of(W, W->comp[i], u->at)) u->at = WK_NONE;
         if (u->at != WK_NONE && (W->n_shield || u->gap_made) && bystander(W, W->comp[i], u->at, t)) {
             if (WK_GROW(W->R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return W->R->err.code;
@@ -737,8 +783,9 @@ static bool local_walk_suffices(wk_wavefront *W, double t) {
 ** of a needle 2e-6 wide, 1.2e-5 behind a non-adjacent edge across a crack
 ** outside the polygon, pinched that edge and closed a cycle
 ** (the fuzz finding of an H at 1e6 with needles 1e5..8e6 long, issue 11). */
-static bool node_behind_piece(const wk_wavefront *W, uint32_t k, const wk_offset_line *L,
-                              double off, wk_point q) {
+static bool node_behind_piece(const wk_wavefront *W, uint32_t k, uint32_t e, double off,
+                              wk_point q) {
+    const wk_offset_line *L = &W->L[e];
     double ulp = DBL_EPSILON * (fabs(q.x) + fabs(q.y));
     if (!(off < -WK_BEHIND_ULPS * ulp)) return false;
     bool any = false;
@@ -746,7 +793,11 @@ static bool node_behind_piece(const wk_wavefront *W, uint32_t k, const wk_offset
         const wk_wf_vertex *u = &W->v[W->comp[i]];
         if (u->at != k) continue;
         any = true;
-        if (L->nx * u->vel.x + L->ny * u->vel.y - L->w < 0) return false;
+        /* approaching from behind the line all along is not from its front:
+        ** an input vertex on the line's input edge's line, receding from it
+        ** (the H with needles of wf_never_reaches_line) */
+        if (L->nx * u->vel.x + L->ny * u->vel.y - L->w < 0 && !wf_never_reaches_line(W, W->comp[i], e))
+            return false;
     }
     return any;
 }
@@ -775,7 +826,7 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
             if (s < -W->eps_g || s > len + W->eps_g) continue;
             double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
             if (fabs(off) > W->eps_g) continue;
-            if (node_behind_piece(W, k, L, off, q)) continue;
+            if (node_behind_piece(W, k, A->eout, off, q)) continue;
             /* A node on the line within tolerance of an end of the piece: that
             ** end arrives at the node (else the node would touch the piece
             ** without cutting it, and the group would change nothing).  A
