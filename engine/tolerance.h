@@ -443,6 +443,17 @@
 ** ~1e-16, and 1e-14 (100 times that) takes only the rounding as parallel;
 ** along a trace, the eps_d distance test then decides. */
 #define WK_MONO_RAY_PARALLEL_SIN 1e-14
+/* A chain event's two remaining edges (chain_skeleton.c resolve) are facing
+** walls that collide, as exactly antiparallel ones (WK_VEL_ANTIPARALLEL),
+** when their unit normals' sine is at most this: turned in doubles, an
+** edge's direction is rounded by ~1e-16 * |coordinates| / length, e.g.
+** 2e-12 rad for a 17-long edge at 3e5 (random polygons sweepable along x, with
+** vertical pairs turned by 0.3 rad: the walls met at sine 1.09e-12, above
+** WK_ANTIPARALLEL_SIN, the vertex between them ran off along them at
+** 1e12 times their speed, and the merge walk got lost: a fallback to the
+** reference, > 600 s at n = 4e5).  The bar of WK_PARALLEL_SIN: the reference's
+** own WK_ANTIPARALLEL_SIN stays tighter for its spikes (kinetics.c). */
+#define WK_MONO_ANTIPARALLEL_SIN WK_PARALLEL_SIN
 /* A wall is entered at the current level tau_p by binary search over its
 ** traces' times, with a window of WK_MONO_LEVEL_SLACK * eps_t +
 ** WK_MONO_LEVEL_REL * |tau_p|: levels are computed from points ((n . q -

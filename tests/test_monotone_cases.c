@@ -229,7 +229,9 @@ static void expect_refused(const wk_polygon *P, const char *what) {
 ** Measured after it: none refused, 55 by 001's path, 33 through the
 ** reference fallback (19 of the 22 weighted ones, which the variant sends
 ** there by design when walls are perpendicular to the sweep, and 14 unit
-** ones whose non-strict merge is not certified), all equal to naive.  At
+** ones whose non-strict merge is not certified), all equal to naive; since
+** facing walls collide within WK_MONO_ANTIPARALLEL_SIN (facing_walls_turned
+** below), 62 by 001's path and 26 (7 unit) through the fallback.  At
 ** least half must take 001's path. */
 #define PERP_CASES 88
 #define PERP_MIN_FAST 44
@@ -582,4 +584,30 @@ Test(monotone_cases, snap_keeps_wall_order) {
         ran++;
     }
     cr_assert_eq(ran, 2);
+}
+
+/* Facing walls antiparallel up to the turn's rounding: the window x in
+** [312550, 312800] of a random x-monotone polygon with vertical pairs
+** (issue 11's generator, n = 10^4 seed 2, turned by 0.3 rad;
+** tests/data/degenerate/mono_facing_walls.wpoly).  Its upper chain's 17-long
+** wall and the wall 207 away that it faces meet at sine 1.09e-12, above
+** WK_ANTIPARALLEL_SIN: the chain skeleton made the vertex between them a
+** regular one running along them at 1e12 times their speed, the merge walk
+** got lost far outside the polygon and the variant went to the reference
+** (reference_fallbacks 1; at n = 4 * 10^5 the whole polygon took over 600 s).
+** Now the walls collide as exactly antiparallel ones (WK_MONO_ANTIPARALLEL_SIN):
+** 001's path, equal to naive. */
+Test(monotone_cases, facing_walls_turned) {
+    char path[512];
+    data_path(path, sizeof path, "degenerate/mono_facing_walls.wpoly");
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = NULL;
+    cr_assert_eq(wk_polygon_read_file(&R, path, &P), WK_OK, "%s: %s", path, R.err.msg);
+    outcome o = solve_checked(P, "mono_facing_walls", true);
+    cr_expect_eq(o.st, WK_OK);
+    cr_expect(o.compared, "mono_facing_walls: not compared with naive");
+    cr_expect_eq(o.fallbacks, 0, "mono_facing_walls: went to the reference wavefront");
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
 }
