@@ -133,14 +133,6 @@
 
 static uint32_t next_of(uint32_t i, uint32_t n) { return i + 1 == n ? 0 : i + 1; }
 
-static double seg_dist(wk_point p, wk_point q, wk_point z) {
-    double dx = q.x - p.x, dy = q.y - p.y, len2 = dx * dx + dy * dy;
-    double u = len2 > 0 ? ((z.x - p.x) * dx + (z.y - p.y) * dy) / len2 : 0.0;
-    if (u < 0) u = 0;
-    if (u > 1) u = 1;
-    return hypot(z.x - (p.x + u * dx), z.y - (p.y + u * dy));
-}
-
 /* ------------------------------------------------------------------ grid */
 
 /* A uniform grid over the sides of a closed polyline pts[0..k) (side i runs
@@ -424,7 +416,7 @@ static bool pip_near(const pip *Q, wk_point z, double tol) {
             size_t cell = (size_t)r * G->nx + c;
             for (uint32_t k = G->start[cell]; k < G->start[cell + 1]; k++) {
                 uint32_t e = G->item[k];
-                if (seg_dist(edge_p(Q->P, e), edge_q(Q->P, e), z) <= tol) return true;
+                if (wk_segment_point_distance(edge_p(Q->P, e), edge_q(Q->P, e), z) <= tol) return true;
             }
         }
     return false;
@@ -764,8 +756,8 @@ static wk_status test_sides(wk_run *R, const face_ctx *F, uint32_t i, uint32_t j
     }
     wk_seg_meet m = wk_segments_meet_counted(R, a, b, c, d);
     if (m == WK_SEG_CROSS) {
-        double near = fmin(fmin(seg_dist(c, d, a), seg_dist(c, d, b)),
-                           fmin(seg_dist(a, b, c), seg_dist(a, b, d)));
+        double near = fmin(fmin(wk_segment_point_distance(c, d, a), wk_segment_point_distance(c, d, b)),
+                           fmin(wk_segment_point_distance(a, b, c), wk_segment_point_distance(a, b, d)));
         if (near <= F->tol) return WK_OK;
         double den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
         double u = ((c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x)) / den;

@@ -72,14 +72,6 @@ static int side2_cmp(const void *x, const void *y) {
     return a->what < b->what ? -1 : a->what > b->what;
 }
 
-static double seg_point_dist(wk_point p, wk_point q, wk_point z) {
-    double dx = q.x - p.x, dy = q.y - p.y, len2 = dx * dx + dy * dy;
-    double u = len2 > 0 ? ((z.x - p.x) * dx + (z.y - p.y) * dy) / len2 : 0.0;
-    if (u < 0) u = 0;
-    if (u > 1) u = 1;
-    return hypot(z.x - (p.x + u * dx), z.y - (p.y + u * dy));
-}
-
 static const char *side2_name(const wk_skeleton *S, const side2 *x, char *buf, size_t size) {
     if (x->what >= S->n_arcs) snprintf(buf, size, "edge %u", x->what - S->n_arcs);
     else snprintf(buf, size, "arc %u [%u, %u]", x->what, x->na, x->nb);
@@ -113,8 +105,8 @@ static wk_status check_sides(wk_run *R, const wk_polygon *P, const wk_skeleton *
             wk_seg_meet m = wk_segments_meet_counted(R, x->a, x->b, y->a, y->b);
             double near = 0;
             if (m == WK_SEG_CROSS)
-                near = fmin(fmin(seg_point_dist(y->a, y->b, x->a), seg_point_dist(y->a, y->b, x->b)),
-                            fmin(seg_point_dist(x->a, x->b, y->a), seg_point_dist(x->a, x->b, y->b)));
+                near = fmin(fmin(wk_segment_point_distance(y->a, y->b, x->a), wk_segment_point_distance(y->a, y->b, x->b)),
+                            fmin(wk_segment_point_distance(x->a, x->b, y->a), wk_segment_point_distance(x->a, x->b, y->b)));
             else if (m == WK_SEG_OVERLAP && !still)
                 near = wk_collinear_overlap(x->a, x->b, y->a, y->b);
             if (near > tol) {

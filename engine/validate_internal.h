@@ -36,6 +36,15 @@ wk_status wk_validate_arc_ends(wk_run *R, const wk_polygon *P, const wk_skeleton
 wk_status wk_validate_arc_bisector(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                                    uint32_t i, double tol, const char *name, const char *stage);
 
+/* Distance from z to the segment p-q (a point when p == q). */
+static inline double wk_segment_point_distance(wk_point p, wk_point q, wk_point z) {
+    double dx = q.x - p.x, dy = q.y - p.y, len2 = dx * dx + dy * dy;
+    double u = len2 > 0 ? ((z.x - p.x) * dx + (z.y - p.y) * dy) / len2 : 0.0;
+    if (u < 0) u = 0;
+    if (u > 1) u = 1;
+    return hypot(z.x - (p.x + u * dx), z.y - (p.y + u * dy));
+}
+
 /* Length of the common part of two collinear segments a-b and c-d (both
 ** validators' face tests: sides that run along each other), measured along
 ** the direction of the one with the larger coordinate extents. */
