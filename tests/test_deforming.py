@@ -310,13 +310,25 @@ class Deforming(unittest.TestCase):
         "invalid_all_but_monotone_large_coordinates.wpoly",
         "invalid_naive_h_needles.wpoly",
         "mismatch_arrangement_motorcycle_holes_touching.wpoly",
-        "needle_vertex_beyond_edge.wpoly", "ub_deforming_nan_step.wpoly"}
+        "needle_vertex_beyond_edge.wpoly", "ub_deforming_nan_step.wpoly",
+        # the variants fuzz run of 2026-12-03 (naive's exit 3 fixed in the engine;
+        # deforming's own run still gives up on these)
+        "invalid_naive_comb_spike_2bbaff18.wpoly", "invalid_naive_comb_spike_facbd269.wpoly",
+        "invalid_naive_h_needles_pass_by.wpoly"}
 
     def test_fuzz_files_fallbacks(self):
         data = os.path.join(tl.DATA, "fuzz")
         names = sorted(f for f in os.listdir(data) if f.endswith(".wpoly"))
         fails, answered = [], 0
+        known = {}  # tests/data/fuzz/KNOWN: file -> the outcomes it is listed with
+        with open(os.path.join(data, "KNOWN")) as fh:
+            for line in fh:
+                if line.strip() and not line.startswith("#"):
+                    name, outcomes = line.split("\t", 1)
+                    known[name] = outcomes
         for f in names:
+            if "deforming=" in known.get(f, "") and "deforming=ok" not in known[f]:
+                continue  # a listed failure of this variant (test_fuzz_findings.c checks it)
             rc, got, err = self.deforming(os.path.join(data, f))
             if rc == 1:
                 # input the reader refuses (outside the input domain), for every
