@@ -319,6 +319,36 @@ static bool wf_sibling_end(const wk_wavefront *W, const wk_wf_vertex *V, const w
     return V->t0 > 0 && X->t0 == V->t0 && X->node == V->node && t <= V->t0 + W->eps_t;
 }
 
+/* V (vi), behind the line of piece a by d0 < 0 at t_now and receding
+** (rate < 0), crossed that line at t_c = t_now - d0 / rate.  If it then
+** already existed, is behind by more than rounding, and an end of the
+** piece was made after t_c (so the piece did not reach there at t_c; a
+** split there would have been an event at t_c, not a late one), V
+** passed the line beyond the piece's end of that time: the split the
+** finders' clamp ("up to eps_d behind: a split now") would make is none.
+** A 12-gon H with needles near (1e6, 1e6): reflex vertex 7 passed 1e-5
+** beside the line of edge 3 beyond the crack's tip (vertex 3, speed
+** 6.7e5) at t = 5e-6; the tip split edge 6 at t = 1.5e-5 on or next to
+** vertex 7's track, and the new end of edge 3's piece put vertex 7 2e-5
+** behind a piece it never met: split there, it closed a cycle (exit 3 in
+** 4 variants with vertex 7 of speed 4.2e4, 0.41 past the split; in one
+** with vertex 6 moved to x = 1e7, vertex 7 of speed 1.4 1e-5 beside it
+** and shielded from its node, plan_slow_stretches).  CGAL's vertex 7
+** runs on (tests/data/fuzz/invalid_naive_h_needles_fold*.wpoly). */
+static bool wf_passed_before_piece(const wk_wavefront *W, uint32_t vi, uint32_t a, double d0,
+                                   double rate) {
+    const wk_wf_vertex *V = &W->v[vi];
+    if (!(d0 < 0) || !(rate < 0)) return false;
+    double tc = W->t_now - d0 / rate;
+    /* behind by more than rounding (as behind_offset_line): t_c is real */
+    wk_point pv = wk_wf_pos(V, W->t_now);
+    double s = fabs(V->vel.x) + fabs(V->vel.y), wu = fmin(W->L[V->ein].w, W->L[V->eout].w);
+    double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON *
+                 (fabs(pv.x) + fabs(pv.y) + (s + s * s / wu + W->L[W->v[a].eout].w) * W->t_now);
+    if (!(V->t0 < tc) || !(-d0 > bar)) return false;
+    return W->v[a].t0 > tc || W->v[W->v[a].next].t0 > tc;
+}
+
 void wk_wf_split_begin(const wk_wavefront *W, uint32_t v, wk_wf_split_search *s) {
     s->v = v;
     s->t = W->v[v].ev_t;
@@ -358,6 +388,7 @@ void wk_wf_split_test(const wk_wavefront *W, wk_wf_split_search *s, uint32_t a) 
     ** all): a vertex more than eps_d in front of the offset line is not
     ** behind the input line, as the distance's rounding is far below eps_d. */
     if (d0 <= W->eps_d && wf_never_reaches_line(W, vi, A->eout)) return;
+    if (wf_passed_before_piece(W, vi, a, d0, rate)) return;
     double t = W->t_now + (d0 > 0 ? d0 : 0) / -rate;
     if (t > s->t) return;
     wk_point p = wk_wf_pos(V, t), pa = wk_wf_pos(A, t), pb = wk_wf_pos(B, t);
@@ -512,6 +543,11 @@ void wk_wf_offer_split(wk_wavefront *W, uint32_t vi, double t, wk_point p, uint3
         wk_offset_distance(&W->L[W->v[a].eout], wk_wf_pos(V, W->t_now), W->t_now) < 0 &&
         wf_never_reaches_line(W, vi, W->v[a].eout))
         return;
+    {
+        const wk_offset_line *L = &W->L[W->v[a].eout];
+        double d0 = wk_offset_distance(L, wk_wf_pos(V, W->t_now), W->t_now);
+        if (wf_passed_before_piece(W, vi, a, d0, L->nx * V->vel.x + L->ny * V->vel.y - L->w)) return;
+    }
     V->ev_kind = WK_WF_SPLIT;
     V->ev_t = t;
     V->ev_p = p;

@@ -409,6 +409,48 @@ static void sort_by_endpoints(const wk_wavefront *W, uint32_t *a, uint32_t n) {
 
 /* ---------------------------------------------------------------- plan */
 
+/* The node a forced vertex f runs into within the simultaneity horizon:
+** the first node (smallest h) whose distance to f's track p + vel h,
+** 0 < h <= eps_t, is at most eps_g while f itself is farther than eps_g
+** from it now (WK_NONE if none).  Such a vertex is the tip of a
+** sub-tolerance spike collapsing along itself: it arrives at that node,
+** not at a node of its own where it is.  A 12-gon H with needles near
+** (1e6, 1e6): at t = 0.94 reflex vertex 7 split edge 0 next to the
+** vertex between edges 0 and 2; the vertex between edges 2 and 6 (speed
+** 4.2e4), 0.43 up a needle 2e-5 wide, became a spike tip and a node of
+** its own, 1e-5 (in time) before it reached the split's node (CGAL's
+** node there); the arcs 0.43 off closed a cycle (exit 3 in 4 variants;
+** tests/data/fuzz/invalid_naive_h_needles_fold.wpoly). */
+static uint32_t forced_track_node(wk_wavefront *W, uint32_t f, double t) {
+    const wk_wf_vertex *F = &W->v[f];
+    wk_point p = wk_wf_pos(F, t), vel = F->vel;
+    double v2 = vel.x * vel.x + vel.y * vel.y, e2 = W->eps_g * W->eps_g, best_h = INFINITY;
+    if (!(v2 > 0)) return WK_NONE;
+    wk_point e = {p.x + vel.x * W->eps_t, p.y + vel.y * W->eps_t};
+    wk_point lo = {fmin(p.x, e.x), fmin(p.y, e.y)}, hi = {fmax(p.x, e.x), fmax(p.y, e.y)};
+    bool listed = near_nodes(W, lo, hi, W->eps_g);
+    uint32_t n = listed ? W->cg.n_out : W->n_cl, k_best = WK_NONE;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t k = listed ? W->cg.out[i] : i;
+        wk_point q = W->cl[k].p;
+        if (wf_dist2(q, p) <= e2) continue;
+        double h = ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2;
+        if (!(h > 0) || h > W->eps_t) continue;
+        wk_point c = {p.x + vel.x * h, p.y + vel.y * h};
+        if (wf_dist2(q, c) <= e2 && h < best_h) {
+            best_h = h;
+            k_best = k;
+        }
+    }
+    return k_best;
+}
+
+static bool is_forced(const wk_wavefront *W, uint32_t u) {
+    for (uint32_t i = 0; i < W->n_forced; i++)
+        if (W->forced[i] == u) return true;
+    return false;
+}
+
 /* Step 1: a node for every seed's event point and every forced vertex,
 ** then the vertices that take part (a local walk for a single event, the
 ** touched cycles otherwise). */
@@ -421,6 +463,7 @@ static wk_status plan_nodes(wk_wavefront *W, double t) {
     }
     for (uint32_t i = 0; i < W->n_forced; i++) {
         uint32_t k;
+        if (forced_track_node(W, W->forced[i], t) != WK_NONE) continue; /* it runs into a node */
         if (add_cluster(W, wk_wf_pos(&W->v[W->forced[i]], t), &k) != WK_OK) return R->err.code;
     }
     W->local_walk = W->n_forced == 0;
@@ -714,6 +757,8 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
         double r = W->eps_g + speed * dt * (W->eps_g / W->eps_d);
         u->at = speed * dt > W->eps_g ? find_cluster_on_track(W, wk_wf_pos(u, t), u->vel, dt, r)
                                       : find_cluster_within(W, wk_wf_pos(u, t), r);
+        if (u->at == WK_NONE && W->n_forced && is_forced(W, W->comp[i]))
+            u->at = forced_track_node(W, W->comp[i], t);
         if (u->at != WK_NONE && W->n_shield && shield_of(W, W->comp[i], u->at)) u->at = WK_NONE;
         if (u->at != WK_NONE && (W->n_shield || u->gap_made) && bystander(W, W->comp[i], u->at, t)) {
             if (WK_GROW(W->R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return W->R->err.code;
