@@ -9,7 +9,7 @@
 ** (binary search) until it reaches node e.  Each half-arc may be used once:
 ** using one twice means the walk circles without reaching e.  When the walk
 ** ends, every unused half-arc must lie on a closed loop of unused ones (an
-** island, possible only with holes: walk_loops, bridge_loop), else some arc
+** island, possible only with holes: walk_loops, wk_bridge_loop), else some arc
 ** labelled e is off the face's boundary.  A face without islands thus
 ** yields exactly k + 1 cycle nodes, each island 2 more (its bridge); the bulk
 ** builder starts from the sum of k + 1 and grows for islands.
@@ -152,10 +152,10 @@ static wk_point node_xy(const wk_skeleton *S, uint32_t v) {
 ** the smallest angle to the ray, sees q.  The cycle becomes
 ** ... u q (loop) q u ..., the two new sides u->q and q->u are flagged.
 ** Loops are taken by decreasing max x, so the ray meets no loop not yet
-** bridged. */
-static wk_status bridge_loop(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
-                             uint32_t *cyc, uint8_t *flag, uint32_t *len, const uint32_t *lp,
-                             uint32_t L, const char *what) {
+** bridged.  Also bridges a cap face's holes (e == WK_NONE, write_obj_capped.c). */
+wk_status wk_bridge_loop(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
+                         uint32_t *cyc, uint8_t *flag, uint32_t *len, const uint32_t *lp,
+                         uint32_t L, const char *what) {
     uint32_t qi = 0;
     for (uint32_t i = 1; i < L; i++) {
         wk_point a = node_xy(S, lp[i]), b = node_xy(S, lp[qi]);
@@ -175,6 +175,11 @@ static wk_status bridge_loop(wk_run *R, const wk_polygon *P, const wk_skeleton *
             best = i;
         }
     }
+    if (best == WK_NONE && e == WK_NONE)
+        return WK_FAIL(R, WK_EINVALID, P->name, 0,
+                       "%sthe cap: a hole (cycle through node %u) lies outside its cap face's "
+                       "outer cycle",
+                       what, lp[qi]);
     if (best == WK_NONE)
         return WK_FAIL(R, WK_EINVALID, P->name, 0,
                        "%sface of edge %u: an island (loop through node %u) lies outside the "
@@ -277,7 +282,7 @@ static wk_status walk_face(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
             }
         }
         if (pick == WK_NONE) break; /* defensive: a NaN coordinate; (b) reports it */
-        if (bridge_loop(R, P, S, e, cyc, flag, len, loop + ls[pick], ls[pick + 1] - ls[pick],
+        if (wk_bridge_loop(R, P, S, e, cyc, flag, len, loop + ls[pick], ls[pick + 1] - ls[pick],
                         what) != WK_OK)
             return R->err.code;
         done[pick] = 1;
@@ -371,7 +376,7 @@ wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, w
         if (hs[e + 1] - hs[e] > maxk) maxk = hs[e + 1] - hs[e];
 
     /* Face e has k = hs[e+1] - hs[e] half-arcs, hence k + 1 cycle nodes,
-    ** plus 2 per island (bridged, see bridge_loop): node[] starts at the
+    ** plus 2 per island (bridged, see wk_bridge_loop): node[] starts at the
     ** sum of k + 1 and grows only for faces with islands. */
     room = face_room(maxk);
     cyc = WK_NEW_ARRAY(R, uint32_t, room);

@@ -53,6 +53,15 @@ wk_status wk_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S, w
 /* Free F's arrays; accepts a zeroed or cleared F. */
 void wk_faces_clear(wk_run *R, wk_faces *F);
 
+/* Bridge the closed node cycle lp[0 .. L) (clockwise: an island of face e,
+** or with e == WK_NONE a hole of a cap face) into the counter-clockwise
+** cycle cyc[0 .. *len) (room *len + L + 2; flag[] the same room, set for
+** the two bridge sides), the hole-to-outer bridge of ear clipping.  Bridge
+** several loops by decreasing max x (faces.c says why). */
+wk_status wk_bridge_loop(wk_run *R, const wk_polygon *P, const wk_skeleton *S, uint32_t e,
+                         uint32_t *cyc, uint8_t *flag, uint32_t *len, const uint32_t *lp,
+                         uint32_t L, const char *what);
+
 /* Signed area of a node cycle in the xy projection (positive when
 ** counter-clockwise), computed relative to its first node. */
 double wk_cycle_area(const wk_skeleton *S, const uint32_t *cycle, uint32_t len);

@@ -41,8 +41,9 @@ static inline wk_status wk_write_begin(wk_run *R, const wk_polygon *P, const wk_
 
 /* The faces of a roof cut at a height (write_obj_capped.c): faces
 ** 0 .. n_edge_faces-1 are the input edges' in input edge order, the rest
-** the cap's cycles; face f is node[end[f-1] .. end[f]) (stored node ids),
-** counter-clockwise seen from above.  WK_EUNSUPPORTED for a face that is
+** the cap's faces (a counter-clockwise cycle, its holes bridged in); face
+** f is node[end[f-1] .. end[f]) (stored node ids), counter-clockwise seen
+** from above.  WK_EUNSUPPORTED for a face that is
 ** not one simple cycle. */
 typedef struct wk_capped_faces {
     uint32_t *node, *end;

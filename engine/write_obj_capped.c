@@ -3,8 +3,10 @@
 ** The faces: of a skeleton cut at a height (arcs with
 ** the cap, WK_NONE, on one side; wk_options.height): one face per input
 ** edge (walls of weight 0 are vertical faces), in input edge order, then
-** one face per closed cycle of the cap, all counter-clockwise seen from
-** above.  A face is walked from its edge (e, next(e)) along its arcs; this
+** one face per counter-clockwise closed cycle of the cap, the clockwise
+** cycles inside it (holes still open at the height) bridged in
+** (cap_bridge_holes), all counter-clockwise seen from above.  A face is
+** walked from its edge (e, next(e)) along its arcs; this
 ** path handles faces whose every node has two of the face's arcs (no
 ** islands, no node visited twice) and says so otherwise (WK_EUNSUPPORTED).
 ** A PSLG's skeleton is cut at its horizon T the same way (its cap is the
@@ -14,6 +16,7 @@
 */
 #include "write.h"
 
+#include <math.h>
 #include <string.h>
 
 /* The next node of face f after cur, arriving from prev: the other arc of
@@ -86,6 +89,107 @@ static wk_status pslg_cap_holes(wk_run *R, const wk_polygon *P, const wk_skeleto
         while (CF->holes[h] != WK_NONE) h++;
     }
     return WK_OK;
+}
+
+/* Does cycle h lie inside cycle c?  The cap's cycles are disjoint
+** wavefront components, so any vertex of h decides; a majority of them
+** does, so that a vertex of h on c (a height at a collision) cannot. */
+static bool cycle_inside(const wk_skeleton *S, const uint32_t *h, uint32_t hl, const uint32_t *c,
+                         uint32_t cl) {
+    uint32_t in = 0;
+    for (uint32_t i = 0; i < hl; i++)
+        in += inside_cycle(S, c, cl, S->nodes[h[i]].x, S->nodes[h[i]].y);
+    return 2 * in > hl;
+}
+
+/* A polygon with holes cut below a hole's closing (concentric squares at
+** --height 1, issue 14): the cap at H is the region inside
+** its outer cycle minus the hole cycles nested in it.  Walked with the cap
+** on the left an outer cycle runs counter-clockwise and a hole's cycle
+** clockwise; written as its own face, a clockwise cycle was a lid over the
+** courtyard and the outer face covered the hole too.  So every clockwise
+** cycle is bridged into the innermost counter-clockwise cycle around it
+** (wk_bridge_loop, as faces.c bridges a face's islands in): one weakly
+** simple face per outer cycle, holes by decreasing max x (faces.c says
+** why).  Cycles of zero area stay faces as before. */
+static wk_status cap_bridge_holes(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
+                                  wk_capped_faces *CF, const char *what) {
+    uint32_t f0 = CF->n_edge_faces, m = CF->n_faces - f0, base = f0 ? CF->end[f0 - 1] : 0;
+    uint32_t n_cw = 0;
+    for (uint32_t f = f0; f < CF->n_faces; f++) {
+        uint32_t from = f ? CF->end[f - 1] : 0;
+        n_cw += wk_cycle_area(S, CF->node + from, CF->end[f] - from) < 0;
+    }
+    if (n_cw == 0) return WK_OK;
+    uint32_t room = CF->n_node - base + 2 * m;
+    double *area = WK_NEW_ARRAY(R, double, m);
+    uint32_t *owner = WK_NEW_ARRAY(R, uint32_t, m), *out = WK_NEW_ARRAY(R, uint32_t, room);
+    uint8_t *flag = WK_NEW_ARRAY(R, uint8_t, room), *done = WK_NEW_ARRAY(R, uint8_t, m);
+    wk_status st = R->err.code;
+    if (!area || !owner || !out || !flag || !done) goto out;
+#define CYC(j) (CF->node + (f0 + (j) ? CF->end[f0 + (j) - 1] : 0))
+#define LEN(j) (CF->end[f0 + (j)] - (f0 + (j) ? CF->end[f0 + (j) - 1] : 0))
+    for (uint32_t j = 0; j < m; j++) area[j] = wk_cycle_area(S, CYC(j), LEN(j));
+    for (uint32_t h = 0; h < m; h++) {
+        owner[h] = WK_NONE;
+        if (area[h] >= 0) continue;
+        for (uint32_t o = 0; o < m; o++)
+            if (area[o] > 0 && (owner[h] == WK_NONE || area[o] < area[owner[h]]) &&
+                cycle_inside(S, CYC(h), LEN(h), CYC(o), LEN(o)))
+                owner[h] = o;
+        if (owner[h] == WK_NONE) {
+            st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
+                         "%sthe cap at the height t = %g has a clockwise cycle (through node "
+                         "%u) inside no counter-clockwise one: no cap face to cut it from",
+                         what, S->nodes[CYC(h)[0]].t, CYC(h)[0]);
+            goto out;
+        }
+    }
+    uint32_t pos = 0, k = 0;
+    for (uint32_t o = 0; o < m; o++) {
+        if (area[o] < 0) continue;
+        uint32_t len = LEN(o);
+        memcpy(out + pos, CYC(o), (size_t)len * sizeof *out);
+        memset(flag + pos, 0, len);
+        for (;;) {
+            uint32_t pick = WK_NONE;
+            double px = -INFINITY;
+            for (uint32_t h = 0; h < m; h++) {
+                if (owner[h] != o || done[h]) continue;
+                double mx = -INFINITY;
+                for (uint32_t i = 0; i < LEN(h); i++) mx = fmax(mx, S->nodes[CYC(h)[i]].x);
+                if (pick == WK_NONE || mx > px) {
+                    px = mx;
+                    pick = h;
+                }
+            }
+            if (pick == WK_NONE) break;
+            done[pick] = 1;
+            if ((st = wk_bridge_loop(R, P, S, WK_NONE, out + pos, flag + pos, &len, CYC(pick),
+                                     LEN(pick), what)) != WK_OK)
+                goto out;
+        }
+        pos += len;
+        owner[k++] = pos; /* reused: the faces' ends, k <= o */
+    }
+#undef CYC
+#undef LEN
+    if ((st = WK_GROW(R, CF->node, CF->cap_node, base + pos)) != WK_OK) {
+        st = R->err.code;
+        goto out;
+    }
+    memcpy(CF->node + base, out, (size_t)pos * sizeof *out);
+    for (uint32_t j = 0; j < k; j++) CF->end[f0 + j] = base + owner[j];
+    CF->n_faces = f0 + k;
+    CF->n_node = base + pos;
+    st = WK_OK;
+out:
+    if (area) WK_FREE_ARRAY(R, area, m);
+    if (owner) WK_FREE_ARRAY(R, owner, m);
+    if (out) WK_FREE_ARRAY(R, out, room);
+    if (flag) WK_FREE_ARRAY(R, flag, room);
+    if (done) WK_FREE_ARRAY(R, done, m);
+    return st;
 }
 
 wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
@@ -173,6 +277,7 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
         }
     }
     if (P->pslg && (st = pslg_cap_holes(R, P, S, CF, what)) != WK_OK) goto out;
+    if (!P->pslg && (st = cap_bridge_holes(R, P, S, CF, what)) != WK_OK) goto out;
 #undef PUSH_NODE
 #undef END_FACE
     st = WK_OK;

@@ -436,6 +436,70 @@ class Deforming(unittest.TestCase):
                          {frozenset(s) for s in (((0, -0.5), (10, -0.5)), ((10, -0.5), (10, -3.5)),
                                                  ((10, -3.5), (0, -3.5)), ((0, -3.5), (0, -0.5)))})
 
+    @staticmethod
+    def signed_area(poly):
+        return sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(poly, poly[1:] + poly[:1])) / 2
+
+    @staticmethod
+    def winding(poly, x, y):
+        # winding number of poly around (x, y): 0 outside, 1 inside a
+        # counter-clockwise face (a bridge, walked both ways, adds nothing)
+        w = 0
+        for (ax, ay), (bx, by) in zip(poly, poly[1:] + poly[:1]):
+            cross = (bx - ax) * (y - ay) - (x - ax) * (by - ay)
+            if ay <= y < by and cross > 0:
+                w += 1
+            elif by <= y < ay and cross < 0:
+                w -= 1
+        return w
+
+    def check_ring_cap(self, caps):
+        # the cap at t = 1 of a 10 x 10 square with a 4 x 4 hole in its
+        # middle: the ring between the outer cycle (8 x 8) and the hole's
+        # (6 x 6), 64 - 36 = 28; every cap face counter-clockwise (a
+        # clockwise one was the lid over the courtyard), none covering the
+        # hole's centre, the ring covered once
+        self.assertGreaterEqual(len(caps), 1)
+        for c in caps:
+            self.assertEqual({round(v[2], 12) for v in c}, {1}, c)
+            self.assertGreater(self.signed_area([v[:2] for v in c]), 0, c)
+        self.assertAlmostEqual(sum(self.signed_area([v[:2] for v in c]) for c in caps), 28,
+                               places=9)
+        for x, y, want in ((5, 5, 0), (4.5, 5.5, 0), (1.5, 5, 1), (5, 8.5, 1), (0.5, 5, 0)):
+            self.assertEqual(sum(self.winding([v[:2] for v in c], x, y) for c in caps), want,
+                             (x, y))
+
+    def test_cap_of_a_polygon_with_a_hole(self):
+        # issue 14: cut below the hole's closing (t = 1.5), the cap has a
+        # hole; OBJ and VTP write it as one face, the hole bridged in
+        path = os.path.join(self.tmp, "ring.wpoly")
+        with open(path, "w") as f:
+            f.write("4\n0 0\n10 0\n10 10\n0 10\n4\n3 3\n3 7\n7 7\n7 3\n")
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--check", "--height", "1",
+                               "--format", "obj", path])
+        self.assertEqual(rc, 0, err)
+        vs = [tuple(map(float, l.split()[1:])) for l in out.splitlines() if l.startswith("v ")]
+        fs = [[int(x) - 1 for x in l.split()[1:]] for l in out.splitlines() if l.startswith("f ")]
+        self.assertEqual(len(fs), 9)  # 8 edge faces, one cap face
+        self.check_ring_cap([[vs[i] for i in f] for f in fs[8:]])
+        rc, out, err = tl.run([tl.WSKEL, "--variant", "deforming", "--check", "--height", "1",
+                               "--format", "vtp", path])
+        self.assertEqual(rc, 0, err)
+        doc = ET.fromstring(out)
+        piece = doc.find("PolyData/Piece")
+        arrays = lambda tag: piece.find(tag).findall("DataArray")  # noqa: E731
+        nums = lambda a: [float(x) for x in a.text.split()]  # noqa: E731
+        pts = nums(arrays("Points")[0])
+        pts = [tuple(pts[i:i + 3]) for i in range(0, len(pts), 3)]
+        conn, offs = (list(map(int, nums(a))) for a in arrays("Polys"))
+        kind = [a for a in arrays("CellData") if a.get("Name") == "kind"][0]
+        kind = list(map(int, nums(kind)))[-len(offs):]
+        polys = [conn[(offs[i - 1] if i else 0):offs[i]] for i in range(len(offs))]
+        self.assertEqual(len(polys), 9)
+        cap_kind = kind[8]
+        self.assertEqual(set(kind[:8]) & {cap_kind}, set())
+        self.check_ring_cap([[pts[i] for i in p] for p, k in zip(polys, kind) if k == cap_kind])
+
     def test_square_with_one_outward_edge(self):
         # a 4 x 4 square whose bottom edge moves outward at speed 1: at t = 2
         # the left and right edges meet along x = 2 from y = -2 to y = 2
