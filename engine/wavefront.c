@@ -99,6 +99,14 @@ wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk) {
 ** solved from its edges' normals, with condition about s / w).  At the
 ** nominal and finer tolerances only (W->input_sides), as every input-side
 ** rule. */
+/* The rate term of a moving vertex's rounding: a vertex of speed s between
+** edges of least weight wu is placed with an error growing like s + s^2 / wu
+** per unit of time (its velocity is built from the two offset lines). */
+static double speed_rounding(const wk_wavefront *W, const wk_wf_vertex *U) {
+    double s = fabs(U->vel.x) + fabs(U->vel.y), wu = fmin(W->L[U->ein].w, W->L[U->eout].w);
+    return s + s * s / wu;
+}
+
 static bool behind_offset_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     const wk_polygon *P = W->P;
     if (!W->input_sides || !wf_other_ring(W, u, e)) return false;
@@ -111,8 +119,7 @@ static bool behind_offset_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     wk_point r = fabs(dy.x) + fabs(dy.y) < fabs(dx.x) + fabs(dx.y) ? dy : dx;
     double rate = L->nx * U->vel.x + L->ny * U->vel.y - L->w;
     double d = L->nx * r.x + L->ny * r.y + rate * t;
-    double s = fabs(U->vel.x) + fabs(U->vel.y), wu = fmin(W->L[U->ein].w, W->L[U->eout].w);
-    double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (fabs(r.x) + fabs(r.y) + (s + s * s / wu + L->w) * t);
+    double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (fabs(r.x) + fabs(r.y) + (speed_rounding(W, U) + L->w) * t);
     return d < -bar;
 }
 
@@ -150,16 +157,14 @@ bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     if (o < 0 || behind_offset_line(W, u, e)) return rate <= 0;
     /* exactly on the input line (not one of u's own edges) and receding from
     ** it by more than its rounding (WK_SPLIT_SIDE_ULPS ulps of u's speed s,
-    ** counted as s + s^2 / w as in behind_offset_line): behind it at every
+    ** speed_rounding, as in behind_offset_line): behind it at every
     ** t > 0.  An H with needles whose edges 3 and 7 are collinear and
     ** antiparallel, 4 apart: reflex vertex 3 (speed 5e5) split edge 6
     ** 1.6e-5 behind edge 7's line, node_behind_piece took it for a vertex
     ** from the line's front, the node pinched edge 7 and the skeleton
     ** closed a cycle (exit 3; tests/data/fuzz/invalid_naive_h_needles_pass_by.wpoly) */
     if (o != 0 || e == W->v[u].ein || e == W->v[u].eout) return false;
-    double sp = fabs(W->v[u].vel.x) + fabs(W->v[u].vel.y);
-    double wu = fmin(W->L[W->v[u].ein].w, W->L[W->v[u].eout].w);
-    return rate < -WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (sp + sp * sp / wu + L->w);
+    return rate < -WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (speed_rounding(W, &W->v[u]) + L->w);
 }
 
 bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t u, wk_point vel,
@@ -342,9 +347,8 @@ static bool wf_passed_before_piece(const wk_wavefront *W, uint32_t vi, uint32_t 
     double tc = W->t_now - d0 / rate;
     /* behind by more than rounding (as behind_offset_line): t_c is real */
     wk_point pv = wk_wf_pos(V, W->t_now);
-    double s = fabs(V->vel.x) + fabs(V->vel.y), wu = fmin(W->L[V->ein].w, W->L[V->eout].w);
     double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON *
-                 (fabs(pv.x) + fabs(pv.y) + (s + s * s / wu + W->L[W->v[a].eout].w) * W->t_now);
+                 (fabs(pv.x) + fabs(pv.y) + (speed_rounding(W, V) + W->L[W->v[a].eout].w) * W->t_now);
     if (!(V->t0 < tc) || !(-d0 > bar)) return false;
     return W->v[a].t0 > tc || W->v[W->v[a].next].t0 > tc;
 }
@@ -539,15 +543,10 @@ void wk_wf_offer_split(wk_wavefront *W, uint32_t vi, double t, wk_point p, uint3
     /* The finders clamp a vertex up to eps_d behind the line to a split
     ** now; an input vertex exactly behind the line never meets it (as in
     ** wk_wf_split_test). */
-    if (vi < W->P->n && V->t0 == 0 &&
-        wk_offset_distance(&W->L[W->v[a].eout], wk_wf_pos(V, W->t_now), W->t_now) < 0 &&
-        wf_never_reaches_line(W, vi, W->v[a].eout))
-        return;
-    {
-        const wk_offset_line *L = &W->L[W->v[a].eout];
-        double d0 = wk_offset_distance(L, wk_wf_pos(V, W->t_now), W->t_now);
-        if (wf_passed_before_piece(W, vi, a, d0, L->nx * V->vel.x + L->ny * V->vel.y - L->w)) return;
-    }
+    const wk_offset_line *L = &W->L[W->v[a].eout];
+    double d0 = wk_offset_distance(L, wk_wf_pos(V, W->t_now), W->t_now);
+    if (vi < W->P->n && V->t0 == 0 && d0 < 0 && wf_never_reaches_line(W, vi, W->v[a].eout)) return;
+    if (wf_passed_before_piece(W, vi, a, d0, L->nx * V->vel.x + L->ny * V->vel.y - L->w)) return;
     V->ev_kind = WK_WF_SPLIT;
     V->ev_t = t;
     V->ev_p = p;
