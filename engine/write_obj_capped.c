@@ -124,9 +124,10 @@ static wk_status cap_bridge_holes(wk_run *R, const wk_polygon *P, const wk_skele
     uint32_t room = CF->n_node - base + 2 * m;
     double *area = WK_NEW_ARRAY(R, double, m);
     uint32_t *owner = WK_NEW_ARRAY(R, uint32_t, m), *out = WK_NEW_ARRAY(R, uint32_t, room);
+    uint32_t *ends = WK_NEW_ARRAY(R, uint32_t, m); /* the written faces' ends in out */
     uint8_t *flag = WK_NEW_ARRAY(R, uint8_t, room), *done = WK_NEW_ARRAY(R, uint8_t, m);
     wk_status st = R->err.code;
-    if (!area || !owner || !out || !flag || !done) goto out;
+    if (!area || !owner || !out || !flag || !done || !ends) goto out;
 #define CYC(j) (CF->node + (f0 + (j) ? CF->end[f0 + (j) - 1] : 0))
 #define LEN(j) (CF->end[f0 + (j)] - (f0 + (j) ? CF->end[f0 + (j) - 1] : 0))
     for (uint32_t j = 0; j < m; j++) area[j] = wk_cycle_area(S, CYC(j), LEN(j));
@@ -170,7 +171,7 @@ static wk_status cap_bridge_holes(wk_run *R, const wk_polygon *P, const wk_skele
                 goto out;
         }
         pos += len;
-        owner[k++] = pos; /* reused: the faces' ends, k <= o */
+        ends[k++] = pos;
     }
 #undef CYC
 #undef LEN
@@ -179,7 +180,7 @@ static wk_status cap_bridge_holes(wk_run *R, const wk_polygon *P, const wk_skele
         goto out;
     }
     memcpy(CF->node + base, out, (size_t)pos * sizeof *out);
-    for (uint32_t j = 0; j < k; j++) CF->end[f0 + j] = base + owner[j];
+    for (uint32_t j = 0; j < k; j++) CF->end[f0 + j] = base + ends[j];
     CF->n_faces = f0 + k;
     CF->n_node = base + pos;
     st = WK_OK;
@@ -189,6 +190,7 @@ out:
     if (out) WK_FREE_ARRAY(R, out, room);
     if (flag) WK_FREE_ARRAY(R, flag, room);
     if (done) WK_FREE_ARRAY(R, done, m);
+    if (ends) WK_FREE_ARRAY(R, ends, m);
     return st;
 }
 
