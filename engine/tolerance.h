@@ -443,6 +443,16 @@
 ** ~1e-16, and 1e-14 (100 times that) takes only the rounding as parallel;
 ** along a trace, the eps_d distance test then decides. */
 #define WK_MONO_RAY_PARALLEL_SIN 1e-14
+/* The merge walk asks whether two coplanar faces of different chains
+** overlap next to a node where several traces meet (merge.c, overlap_at)
+** by probing points WK_MONO_PROBE_REL * eps_d around it: far enough from
+** the node that rounding (nodes within eps_d) cannot put a probe on the
+** wrong side of a trace through it, near enough that no other trace lies
+** between.  1e3 was too far: crosses 2 wide with a vertex at 1e7
+** (eps_d 0.01, tests/fuzz/cross_far_vertex_sweep.py) were probed 10 units
+** out, past their arms, and 7 of 59 survey mismatches stayed; at 16 one
+** did. */
+#define WK_MONO_PROBE_REL 16.0
 /* A chain event's two remaining edges (chain_skeleton.c resolve) are facing
 ** walls that collide, as exactly antiparallel ones (WK_VEL_ANTIPARALLEL),
 ** when their unit normals' sine is at most this: turned in doubles, an

@@ -400,3 +400,15 @@ done:
     if (runs) WK_FREE_ARRAY(R, runs, cap_runs);
     return st;
 }
+
+wk_status wk_mono_direction_reverse(mono *M) {
+    wk_point d = {-M->d.x, -M->d.y};
+    uint32_t vw, ve;
+    bool strict;
+    double viol;
+    if (!check_direction(M, d, WK_MONO_DIR_TOL * M->eps_d, &vw, &ve, &strict, &viol))
+        return WK_FAIL(M->R, WK_EALGO, M->P->name, 0,
+                       "monotone: the reversed sweep direction does not check out");
+    M->d = d, M->vw = vw, M->ve = ve, M->strict = strict, M->reversed = true;
+    return WK_OK;
+}

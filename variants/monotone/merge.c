@@ -44,6 +44,7 @@ typedef struct hit {
     uint32_t chain, trace, face; /* face: the edge on the trace's other side */
     double uncertain;   /* where the ray meets a coplanar pair it cannot
                            follow (test_trace), INFINITY if nowhere */
+    bool along;         /* the crossing is test_trace's "runs along" case */
 } hit;
 
 typedef struct walk {
@@ -53,6 +54,9 @@ typedef struct walk {
     uint32_t face[2];   /* current lower (0) and upper (1) face */
     uint32_t excl_c[CLUSTER_MAX], excl_v[CLUSTER_MAX];
     uint32_t n_excl;
+    uint32_t arr_u, arr_b;    /* the faces M' came into cur between */
+    uint32_t cl_c[CLUSTER_MAX + 2], cl_f[CLUSTER_MAX + 2]; /* faces met at cur */
+    uint32_t n_cl;
 } walk;
 
 static double cross(wk_point a, wk_point b) { return a.x * b.y - a.y * b.x; }
@@ -90,6 +94,90 @@ static bool straight_pair(const mono *M, uint32_t a, uint32_t b, uint32_t *s) {
     if (wk_vertex_velocity(&M->L[in], &M->L[out], &v) != WK_VEL_STRAIGHT) return false;
     *s = out; /* edge out starts at the shared vertex */
     return true;
+}
+
+/* Where wall w[0..k) of a face is at level tau: *q, false if the wall has
+** no non-flat trace alive then (the face's piece is gone); an empty wall
+** (the chain's end rays) bounds nothing: *unbounded. */
+static bool wall_at(const mono_chain *C, const uint32_t *w, uint32_t k, double tau, wk_point *q,
+                    bool *unbounded) {
+    *unbounded = k == 0;
+    if (k == 0) return true;
+    uint32_t lo = 0, hi = k;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (C->v[w[mid]].t1 < tau) lo = mid + 1;
+        else hi = mid;
+    }
+    while (lo < k && C->v[w[lo]].flat) lo++;
+    if (lo == k || C->v[w[lo]].t0 > tau) return false;
+    *q = wk_mono_trace_at(&C->v[w[lo]], tau);
+    return true;
+}
+
+/* Is q inside the face of edge e in chain c's skeleton: between the face's
+** walls at q's level? */
+static bool in_chain_face(const mono *M, uint32_t c, uint32_t e, wk_point q) {
+    const mono_chain *C = &M->ch[c];
+    const wk_offset_line *L = &M->L[e];
+    double tau = level(L, q);
+    if (!(tau > 0)) return false;
+    uint32_t k = wk_mono_chain_local(M, C, e);
+    if (k == WK_NONE) return false;
+    wk_point a, b, u = {L->ny, -L->nx}; /* e's direction: its face on the left */
+    bool ua, ub;
+    if (!wall_at(C, C->lw + C->lw_start[k], C->lw_start[k + 1] - C->lw_start[k], tau, &a, &ua) ||
+        !wall_at(C, C->rw + C->rw_start[k], C->rw_start[k + 1] - C->rw_start[k], tau, &b, &ub))
+        return false;
+    return (ua || dot(sub(q, a), u) > 0) && (ub || dot(sub(b, q), u) > 0);
+}
+
+/* Do the regions of upper face u and lower face b overlap next to node p
+** (probed at WK_MONO_PROBE_REL * eps_d around it)?  Coplanar faces that
+** only touch at p (the four arms' sides of a symmetric cross at its centre,
+** tests/data/hand/cross.wpoly) have no common vertex to follow there. */
+static bool overlap_at(const mono *M, uint32_t u, uint32_t b, wk_point p) {
+    double r = WK_MONO_PROBE_REL * M->eps_d;
+    for (int k = 0; k < 16; k++) {
+        double a = 2 * 3.14159265358979323846 * (k + 0.37) / 16; /* off the axes */
+        wk_point q = {p.x + r * cos(a), p.y + r * sin(a)};
+        if (in_chain_face(M, 1, u, q) && in_chain_face(M, 0, b, q)) return true;
+    }
+    return false;
+}
+
+/* Leaving node cur between faces eu / eb: did the walk meet there an upper
+** and a lower face that are coplanar, other than the pair it came in or
+** leaves by?  Then several traces meet at cur and one of the coplanar
+** pairs' common vertex ran somewhere near: where M' turns onto it depends
+** on where that pair first touched, as for a pair entered from its later
+** side (wk_mono_merge), and which crossings at cur the walk took first was
+** decided by their order, not by the geometry.  A survey case
+** (tests/fuzz/cross_far_vertex_sweep.py, a plus of arms 1 wide whose
+** vertex 4 is moved to (270, 1341),
+** tests/data/fuzz/mismatch_monotone_plus_far_vertex.wpoly): at (0, 0),
+** t = 1, faces 6 / 2 (y = 1 - t) and 8 / 0 (y = -1 + t) all meet with
+** faces 5, 9 and 11; M' should leave west between 2 and 8 and turn north
+** between 2 and 6 at x = -0.099, the walk left between 5 and 2 and the
+** skeleton (valid) missed the pair's arc. */
+static bool cluster_uncertain(const walk *W, uint32_t eu, uint32_t eb) {
+    for (uint32_t i = 0; i < W->n_cl; i++) {
+        if (W->cl_c[i] != 1) continue;
+        for (uint32_t j = 0; j < W->n_cl; j++) {
+            if (W->cl_c[j] != 0) continue;
+            uint32_t u = W->cl_f[i], b = W->cl_f[j];
+            if ((u == W->arr_u && b == W->arr_b) || (u == eu && b == eb)) continue;
+            if (coplanar(W->M, u, b) && overlap_at(W->M, u, b, W->p)) return true;
+        }
+    }
+    return false;
+}
+
+static void cluster_start(walk *W, uint32_t eu, uint32_t eb) {
+    W->arr_u = eu, W->arr_b = eb;
+    W->cl_c[0] = 1, W->cl_f[0] = eu;
+    W->cl_c[1] = 0, W->cl_f[1] = eb;
+    W->n_cl = 2;
 }
 
 static bool excluded(const walk *W, uint32_t c, uint32_t v) {
@@ -182,7 +270,21 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
         return;
     }
     if (!T->flat && runs_back_into_coplanar(W, c, T, beyond, A, D, len, den, best)) return;
-    if (fabs(den) <= WK_MONO_RAY_PARALLEL_SIN && fabs(cross(D, Ap)) <= M->eps_d) {
+    /* Along by distance too (both ends of a finite trace within eps_d of
+    ** the ray's line), where it matters, into a coplanar pair: the trace's
+    ** direction is a difference of constructed nodes, each up to ~1e-12
+    ** off.  A survey case (tests/fuzz/cross_far_vertex_sweep.py, a T with
+    ** a vertex at 6.4e4, tests/data/fuzz/mismatch_monotone_t_far_vertex.wpoly):
+    ** the bisector of faces 6 / 1 ran along the trace of faces 1 / 2 (2
+    ** coplanar with 6) at sine 1e-12, so the trace was neither along nor
+    ** crossed, and M' ran on to the trace's end without faces 2 / 6 ever
+    ** meeting: valid, not the polygon's skeleton. */
+    bool along_by_distance =
+        isfinite(len) && fabs(cross(W->dir, Ap)) <= M->eps_d &&
+        fabs(cross(W->dir, sub(C->node[T->end].p, W->p))) <= M->eps_d &&
+        coplanar(M, beyond, W->face[1 - c]);
+    if ((fabs(den) <= WK_MONO_RAY_PARALLEL_SIN && fabs(cross(D, Ap)) <= M->eps_d) ||
+        along_by_distance) {
         /* The ray runs along this trace.  If the face beyond is coplanar with
         ** the other chain's face, M' really continues between those two
         ** (the trace is where that coincidence starts): cross here. */
@@ -194,12 +296,15 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
         }
         if (mu > len + M->eps_d || lambda < -M->eps_d) return;
         if (mu > len) mu = len;
-        if (lambda < best->lambda) {
+        /* A crossing of the other kind within eps_d comes first (below) */
+        if (lambda < best->lambda &&
+            (best->chain == WK_NONE || best->along || best->lambda > lambda + M->eps_d)) {
             best->lambda = lambda < 0 ? 0 : lambda;
             best->mu = mu;
             best->chain = c;
             best->trace = v;
             best->face = beyond;
+            best->along = true;
         }
         return;
     }
@@ -211,12 +316,24 @@ static void test_trace(const walk *W, uint32_t c, uint32_t v, bool left_wall, ui
     if (lambda < 0) lambda = 0;
     if (mu < 0) mu = 0;
     if (mu > len) mu = len;
-    if (lambda < best->lambda) {
+    /* Before a crossing "along" a trace into a coplanar pair within eps_d
+    ** (several traces meeting at the current node): that one says the ray
+    ** stays inside the other chain's face, this one says the ray leaves
+    ** it, and only this one can be right.  A fuzz finding's second walk
+    ** (tests/data/fuzz/mismatch_monotone_cross_far_vertex.wpoly, swept
+    ** east): at (0, 0), t = 1, the bisector of faces 2 / 9 runs along the
+    ** trace of faces 2 / 5, whose face 5 is coplanar with 9, and through
+    ** the lower chain's node where faces 9, 11 and 0 meet; taking the
+    ** trace first sent M' round the node through faces 5 and 3 and then
+    ** nowhere, while the ray leaves face 9 there at once (face 0 lies
+    ** lower on it). */
+    if (lambda < best->lambda || (best->along && lambda <= best->lambda + M->eps_d)) {
         best->lambda = lambda;
         best->mu = mu;
         best->chain = c;
         best->trace = v;
         best->face = left_wall ? T->ein : T->eout;
+        best->along = false;
     }
     (void)e;
 }
@@ -307,7 +424,7 @@ static bool snap_keeps_order(const walk *W, const hit *best, wk_point X, wk_poin
     walk V = *W; /* the same walk with best's trace crossed */
     V.excl_c[V.n_excl] = best->chain;
     V.excl_v[V.n_excl++] = best->trace;
-    hit other = {lq - M->eps_d, 0, WK_NONE, WK_NONE, WK_NONE, INFINITY};
+    hit other = {lq - M->eps_d, 0, WK_NONE, WK_NONE, WK_NONE, INFINITY, false};
     walk_face(&V, 1, V.face[1], &other);
     walk_face(&V, 0, V.face[0], &other);
     return other.chain == WK_NONE;
@@ -394,16 +511,50 @@ wk_status wk_mono_merge(mono *M) {
     uint32_t eu_end = M->ve, eb_end = (M->ve + n - 1) % n;
     if (add_mnode(M, wk_mono_vertex(M, M->vw), 0.0, M->vw, &W.cur) != WK_OK) return R->err.code;
     W.p = wk_mono_vertex(M, M->vw);
+    cluster_start(&W, eu, eb);
     uint64_t max_steps = 16 * (uint64_t)n + 64;
     for (uint64_t step = 0; step < max_steps; step++) {
         const wk_offset_line *Lu = &M->L[eu], *Lb = &M->L[eb];
         wk_point g = {Lu->nx / Lu->w - Lb->nx / Lb->w, Lu->ny / Lu->w - Lb->ny / Lb->w};
         wk_point dir = {-g.y, g.x};
         double gl = hypot(dir.x, dir.y);
+        /* M' runs back in time through a coplanar pair (below) */
+        bool backwards = false;
         if (coplanar(M, eu, eb)) {
             /* one plane: M' follows the vertex between them, along the normal */
             dir = (wk_point){Lu->nx, Lu->ny};
-            if (dot(dir, M->d) < 0) dir.x = -dir.x, dir.y = -dir.y;
+            if (dot(dir, M->d) < 0) {
+                /* Against the normal, M' runs back along that vertex's
+                ** trace from its end, where the walk came in, to its start,
+                ** where the two coplanar faces first touched.  The walk
+                ** cannot place that end: it came in along a trace of the
+                ** third face there, whose line is the bisector it ran on
+                ** (the third face's bisector with either coplanar face is
+                ** one line), so the crossing is decided by the start,
+                ** which the walk reaches only later.  A fuzz finding
+                ** (tests/data/fuzz/mismatch_monotone_cross_far_vertex.wpoly,
+                ** a cross whose arm of edges 6, 7, 8 is a wedge to
+                ** x = -3e5): faces 5 and 9 on x = -1 first touch at
+                ** t = 0.45 where vertices (5, 6) and (8, 9) meet, and their
+                ** vertex runs at y = 0.45 to x = 0; the walk reached x = 0 at
+                ** (0, 0), t = 1 (where the flat trace of faces 3 / 5 meets
+                ** face 2's traces), turned into faces 9 / 5 there and ran
+                ** west along y = 0: a skeleton the validator accepts, not
+                ** the polygon's (naive, arrangement, deforming, CGAL agree).
+                ** Not certified when it runs back more than eps_d (a pair
+                ** that touches at one point is left at once).  Not even
+                ** where M' came in forwards between another coplanar pair
+                ** on the same line: in bin/wskel-gen rectilinear --n 20
+                ** --seed 1 the vertices of faces 1 / 15 and 7 / 11 meet
+                ** head-on at (450, 0) (so taking it would be right there),
+                ** but in a cross of the survey
+                ** (tests/fuzz/cross_far_vertex_sweep.py case 168,
+                ** tests/data/fuzz/mismatch_monotone_cross_two_pairs.wpoly)
+                ** the pair 5 / 9 runs at y = 0.039, not on the line y = 0
+                ** of the pair 3 / 11 that came in. */
+                dir.x = -dir.x, dir.y = -dir.y;
+                backwards = true;
+            }
             gl = 1;
         } else if (!(gl > WK_MONO_COPLANAR_REL * (1 / Lu->w + 1 / Lb->w))) {
             return WK_FAIL(R, WK_EALGO, P->name, 0,
@@ -422,7 +573,7 @@ wk_status wk_mono_merge(mono *M) {
         W.dir = dir;
         W.face[0] = eb;
         W.face[1] = eu;
-        hit best = {INFINITY, 0, WK_NONE, WK_NONE, WK_NONE, INFINITY};
+        hit best = {INFINITY, 0, WK_NONE, WK_NONE, WK_NONE, INFINITY, false};
         walk_face(&W, 1, eu, &best);
         walk_face(&W, 0, eb, &best);
         if (eu == eu_end && eb == eb_end) {
@@ -435,11 +586,20 @@ wk_status wk_mono_merge(mono *M) {
                 return WK_OK;
             }
         }
-        if (isfinite(best.uncertain) && best.uncertain <= best.lambda + M->eps_d)
+        if (isfinite(best.uncertain) && best.uncertain <= best.lambda + M->eps_d) {
+            M->coplanar_later = true;
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: the merge chain between faces %u / %u runs back along a "
                            "trace into a coplanar pair of faces (at %.17g, %.17g): not certified",
                            eu, eb, W.p.x + M->o.x, W.p.y + M->o.y);
+        }
+        if (backwards && best.lambda > M->eps_d) {
+            M->coplanar_later = true;
+            return WK_FAIL(R, WK_EALGO, P->name, 0,
+                           "monotone: the merge chain enters the coplanar faces %u / %u from "
+                           "their later side (at %.17g, %.17g): not certified",
+                           eu, eb, W.p.x + M->o.x, W.p.y + M->o.y);
+        }
         if (best.chain == WK_NONE)
             return WK_FAIL(R, WK_EALGO, P->name, 0,
                            "monotone: the merge chain leaves faces %u / %u nowhere (at %.17g, "
@@ -461,11 +621,19 @@ wk_status wk_mono_merge(mono *M) {
         }
         if (hypot(X.x - W.p.x, X.y - W.p.y) > M->eps_d) {
             uint32_t m;
+            if (W.n_cl > 2 && cluster_uncertain(&W, eu, eb)) {
+                M->coplanar_later = true;
+                return WK_FAIL(R, WK_EALGO, P->name, 0,
+                               "monotone: the merge chain leaves a node of several traces where "
+                               "coplanar faces meet (at %.17g, %.17g): not certified",
+                               W.p.x + M->o.x, W.p.y + M->o.y);
+            }
             if (add_mnode(M, X, t, WK_NONE, &m) != WK_OK || add_marc(M, W.cur, m, eu, eb) != WK_OK)
                 return R->err.code;
             W.cur = m;
             W.p = X;
             W.n_excl = 0;
+            cluster_start(&W, eu, eb);
         }
         if (W.n_excl == CLUSTER_MAX)
             return WK_FAIL(R, WK_EALGO, P->name, 0,
@@ -477,6 +645,8 @@ wk_status wk_mono_merge(mono *M) {
         M->cr[M->n_cr++] = (mono_cross){best.chain, best.trace, W.cur, best.mu};
         if (best.chain == 1) eu = best.face;
         else eb = best.face;
+        W.cl_c[W.n_cl] = best.chain; /* n_excl <= CLUSTER_MAX bounds n_cl */
+        W.cl_f[W.n_cl++] = best.face;
     }
     return WK_FAIL(R, WK_EALGO, P->name, 0, "monotone: the merge chain does not reach v_e");
 }

@@ -31,7 +31,7 @@ static void mono_clear(mono *M) {
 ** variant's answer, not a failure).  WK_EALGO otherwise: the
 ** merge could not certify this input (see README.md); the caller falls back.
 ** Validates its own result. */
-static wk_status monotone_merge_run(mono *M, wk_skeleton **out) {
+static wk_status monotone_merge_run(mono *M, bool reverse, wk_skeleton **out) {
     wk_run *R = M->R;
     const wk_polygon *P = M->P;
     double wmax = 0;
@@ -45,6 +45,7 @@ static wk_status monotone_merge_run(mono *M, wk_skeleton **out) {
     M->o = wk_polygon_centre(P);
     for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge_at(P, i, M->o, &M->L[i]);
     if ((st = wk_mono_direction(M)) != WK_OK) return st;
+    if (reverse && (st = wk_mono_direction_reverse(M)) != WK_OK) return st;
     if (!M->strict) {
         /* Walls perpendicular to the sweep with weights: the merge walk's
         ** local decisions were seen to pass the validator with a skeleton
@@ -117,8 +118,24 @@ static wk_status monotone_run(wk_run *R, const wk_polygon *P, wk_skeleton **out)
     M.R = R;
     M.P = P;
     *out = NULL;
-    wk_status st = monotone_merge_run(&M, out);
+    wk_status st = monotone_merge_run(&M, false, out);
+    bool again = st == WK_EALGO && M.coplanar_later;
     mono_clear(&M);
+    if (again) {
+        /* The walk entered a coplanar pair of faces from its later side,
+        ** where it cannot place M' (merge.c).  Swept the other way, M'
+        ** meets that pair first where the two faces first touch, which the
+        ** walk finds (a crossing of two traces), and then follows their
+        ** vertex forwards in time.  Once: if that walk fails too, the
+        ** reference.  tests/data/fuzz/mismatch_monotone_cross_far_vertex.wpoly
+        ** and mismatch_monotone_integer_12gon.wpoly take this path. */
+        wk_run_clear_error(R);
+        memset(&M, 0, sizeof M);
+        M.R = R;
+        M.P = P;
+        st = monotone_merge_run(&M, true, out);
+        mono_clear(&M);
+    }
     if (st != WK_EALGO) return st; /* ok, no memory, or WK_EUNSUPPORTED */
     return wk_solve_by_reference(R, P, WK_VC_reference_fallbacks, out);
 }

@@ -133,6 +133,9 @@ typedef struct mono {
     wk_offset_line *L;      /* per edge, relative to o */
     wk_point d;             /* east (unit) */
     bool strict;            /* no edge is perpendicular to d */
+    bool reversed;          /* d is the opposite of direction.c's choice */
+    bool coplanar_later;    /* the merge failed entering a coplanar pair
+                               from its later side (merge.c) */
     uint32_t vw, ve;        /* westmost / eastmost vertex (chain ends) */
     double eps_d, eps_t;    /* the engine's tolerance policy (tolerance.h) */
     mono_chain ch[2];       /* 0: lower, 1: upper */
@@ -156,6 +159,10 @@ static inline wk_point wk_mono_vertex(const mono *M, uint32_t i) {
 ** directions are too narrow to use with doubles; WK_ENOMEM.
 ** O(n log n). */
 wk_status wk_mono_direction(mono *M);
+/* direction.c: after wk_mono_direction, sweep the other way: d = -d, with
+** v_w, v_e and M->strict for it (monotone.c's second walk).  WK_EALGO if
+** -d does not check out (it does whenever d does, up to rounding). */
+wk_status wk_mono_direction_reverse(mono *M);
 
 /* chain_skeleton.c: simulate chain c (0 lower, 1 upper) of M, filling
 ** M->ch[c] (traces, nodes, walls).  WK_EALGO if the chain's wavefront breaks
