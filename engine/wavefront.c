@@ -545,8 +545,22 @@ void wk_wf_offer_split(wk_wavefront *W, uint32_t vi, double t, wk_point p, uint3
     ** wk_wf_split_test). */
     const wk_offset_line *L = &W->L[W->v[a].eout];
     double d0 = wk_offset_distance(L, wk_wf_pos(V, W->t_now), W->t_now);
+    double rate = L->nx * V->vel.x + L->ny * V->vel.y - L->w;
+    /* A vertex that does not approach the piece's offset line (moving along
+    ** it or away from it, WK_APPROACH_REL as in wk_wf_split_test) never
+    ** meets the piece by its own motion: only an end of the piece can run
+    ** into it, and that is the end's event.  A finder that measures the
+    ** meeting along v's track offered it anyway: in a cross with vertices
+    ** pulled out to 5e11 and 3.4e10, a reflex vertex whose outgoing edge is
+    ** collinear with a far edge (both on y = 1) moves along that edge's
+    ** offset line and was offered a split of it at t = 0, 4.3e10 short of
+    ** the piece; the group's progress guarantee (wavefront_group.c,
+    ** plan_seed_cuts) pulled the piece's end to the node, and the skeleton
+    ** had a node at t = 0 5e8 from its edge's line (exit 3; issue 11,
+    ** tests/data/fuzz/invalid_arrangement_cross_far_collinear.wpoly). */
+    if (rate >= -WK_APPROACH_REL * (L->w + fabs(V->vel.x) + fabs(V->vel.y))) return;
     if (vi < W->P->n && V->t0 == 0 && d0 < 0 && wf_never_reaches_line(W, vi, W->v[a].eout)) return;
-    if (wf_passed_before_piece(W, vi, a, d0, L->nx * V->vel.x + L->ny * V->vel.y - L->w)) return;
+    if (wf_passed_before_piece(W, vi, a, d0, rate)) return;
     V->ev_kind = WK_WF_SPLIT;
     V->ev_t = t;
     V->ev_p = p;

@@ -760,6 +760,41 @@ static bool bystander(const wk_wavefront *W, uint32_t u, uint32_t k, double t) {
     return wf_dist2(c, q) > bar * bar;
 }
 
+/* True if x is a seed of the group: its candidate was popped for it
+** (between groups every alive vertex with a finite candidate is queued,
+** wavefront_internal.h; the deferred ones are queued again). */
+static bool is_seed(const wk_wavefront *W, uint32_t x) {
+    const wk_wf_vertex *X = &W->v[x];
+    return X->ev_kind != WK_WF_NONE && isfinite(X->ev_t) && !wk_event_queue_contains(&W->Q, x);
+}
+
+/* The part of the group's time span (t .. t_last) that vertex u, not a
+** seed, lives through as it is: up to the earliest event that the group
+** leaves out and that ends u, its own candidate or its predecessor's edge
+** event (the piece ending at u collapses), when none of that event's other
+** vertices is a seed (a seed's event supersedes it).  An event of a fast
+** vertex can be left out of the group (wavefront.c, simulate: it would be
+** resolved where it is not yet), and u's track must then stop where that
+** event stops u, not run on to a node beyond it.  A cross whose arms are
+** 1-2 wide with vertices pulled out to 1.3e14, 7.8e8, 3.4e10 and 4.3e10:
+** the tip of a sliver 2 wide and 3.3e10 long (speed 3.4e10) reaches the
+** sliver's reflex foot, 7.8e8 from the group's node, at t = 1 (that edge
+** event left out), but over the group's span of 2.02 its track ran on to
+** the node; it arrived there, the sliver's edge (not its neighbour along
+** the polygon's side) was joined to the node, and the last triangle
+** collapsed 3.9e8 outside the polygon (exit 3 in every variant;
+** tests/data/fuzz/invalid_naive_cross_far_sliver_tip.wpoly). */
+static double track_span(const wk_wavefront *W, uint32_t u, double t) {
+    const wk_wf_vertex *U = &W->v[u], *P = &W->v[U->prev];
+    double end = W->t_last;
+    if (is_seed(W, u)) return end - t;
+    if (U->ev_kind != WK_WF_NONE && U->ev_t < end && !is_seed(W, U->ev_b) &&
+        (U->ev_kind == WK_WF_EDGE || !is_seed(W, U->ev_a)))
+        end = U->ev_t;
+    if (P->ev_kind == WK_WF_EDGE && P->ev_b == u && P->ev_t < end && !is_seed(W, U->prev)) end = P->ev_t;
+    return end > t ? end - t : 0;
+}
+
 /* Step 2a: every vertex within tolerance of a node arrives there (unless
 ** shielded from it, or a bystander of it). */
 static wk_status plan_arrivals(wk_wavefront *W, double t) {
@@ -770,7 +805,7 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
         ** close to a node arrives there in the same instant.  Not |vel|
         ** eps_t: a reflex vertex of speed 4e5 then arrived at a node 2.4
         ** units away, in a group of one event (the same H with needles) */
-        double speed = fabs(u->vel.x) + fabs(u->vel.y), dt = W->t_last - t;
+        double speed = fabs(u->vel.x) + fabs(u->vel.y), dt = track_span(W, W->comp[i], t);
         double r = W->eps_g + speed * dt * (W->eps_g / W->eps_d);
         u->at = speed * dt > W->eps_g ? find_cluster_on_track(W, wk_wf_pos(u, t), u->vel, dt, r)
                                       : find_cluster_within(W, wk_wf_pos(u, t), r);
