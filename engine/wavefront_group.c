@@ -871,6 +871,31 @@ static bool local_walk_suffices(wk_wavefront *W, double t) {
     return true;
 }
 
+/* The pinches (plan_pinches, plan_seed_cuts) can still take the local
+** walk beyond itself after local_walk_suffices passed: a node within eps_g
+** of the far end of a stretch's last piece makes the vertex just outside
+** arrive (its own outgoing piece is not in the plan: "2 pieces arrive, 1
+** leave"), and one near the first vertex of a stretch makes that vertex
+** arrive.  True if either happened: the group then takes whole cycles.
+** A weighted 12-gon H with a vertex pulled out to a spike 5e8 long
+** (eps_d 0.5, the H 6 wide): at t = 0.63 reflex vertex 10 lies 0.05 from
+** the node of an edge event and a split, one vertex beyond the walk; the
+** plan failed at eps_d and at 2 eps_d, and 4 eps_d swallowed a piece 2.3
+** long, so the vertex it made raced up the spike 1.6 off its edge's line
+** and put the spike's node 3.5e7 low: at t = 0.68, where the spike's three
+** edges meet at t = 1.38 (exit 0 and valid at the validator's tolerance of
+** 50; issue 11.  A finder whose split candidate named another piece got
+** a forced vertex there, took whole cycles and was right;
+** tests/data/fuzz/mismatch_naive_h_spike_local_walk.wpoly). */
+static bool local_walk_outgrown(const wk_wavefront *W) {
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        const wk_wf_vertex *c = &W->v[W->comp[i]];
+        if (W->v[c->prev].seen != W->stamp && c->at != WK_NONE) return true;
+        if (W->v[c->next].seen != W->stamp && W->v[c->next].at != WK_NONE) return true;
+    }
+    return false;
+}
+
 /* True if node k, off (< 0: behind) from the line L of a piece, only
 ** looks like it touches the piece: it lies clearly behind the line (more
 ** than the rounding of its place, WK_BEHIND_ULPS ulps of its coordinates)
@@ -1587,6 +1612,12 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
         if (plan_arrivals(W, t) != WK_OK) return R->err.code;
     }
     if (plan_pinches(W, t) != WK_OK || plan_seed_cuts(W, t) != WK_OK) return R->err.code;
+    if (W->local_walk && local_walk_outgrown(W)) {
+        W->local_walk = false;
+        W->n_pin = 0;
+        if (collect_cycles(W) != WK_OK || plan_arrivals(W, t) != WK_OK) return R->err.code;
+        if (plan_pinches(W, t) != WK_OK || plan_seed_cuts(W, t) != WK_OK) return R->err.code;
+    }
     if (plan_sub_pieces(W) != WK_OK || plan_cancel(W, t) != WK_OK) return R->err.code;
     if (plan_force_touching(W, t, again) != WK_OK) return R->err.code;
     if (*again) return WK_OK;
