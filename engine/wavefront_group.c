@@ -464,13 +464,14 @@ static bool is_swept(const wk_wavefront *W, uint32_t u) {
     return false;
 }
 
-/* The node forced vertex f arrives at instead of a node of its own:
-** the one it runs into (track_node_ahead), or for a crack tip of
-** plan_force_touching (W->swept) the one it left within eps_t (farther
-** than eps_g now), the latest if several (WK_NONE if none). */
+/* The node forced vertex f arrives at instead of a node of its own: for a
+** crack tip of plan_force_touching (W->swept) the one it left within eps_t
+** (farther than eps_g now), the latest if several, even when a node lies
+** ahead of it (a seed's own, where its split would have been); else the
+** one it runs into (track_node_ahead); WK_NONE if none. */
 static uint32_t forced_track_node(wk_wavefront *W, uint32_t f, double t) {
-    uint32_t k_best = track_node_ahead(W, f, t);
-    if (k_best != WK_NONE || !W->n_swept || !is_swept(W, f)) return k_best;
+    uint32_t k_best = WK_NONE;
+    if (!W->n_swept || !is_swept(W, f)) return track_node_ahead(W, f, t);
     const wk_wf_vertex *F = &W->v[f];
     wk_point p = wk_wf_pos(F, t), vel = F->vel;
     double v2 = vel.x * vel.x + vel.y * vel.y, best_h = -INFINITY;
@@ -483,7 +484,7 @@ static uint32_t forced_track_node(wk_wavefront *W, uint32_t f, double t) {
             k_best = k;
         }
     }
-    return k_best;
+    return k_best != WK_NONE ? k_best : track_node_ahead(W, f, t);
 }
 
 static bool is_forced(const wk_wavefront *W, uint32_t u) {
