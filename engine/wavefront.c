@@ -893,6 +893,7 @@ done:
     WK_FREE_ARRAY(R, W.v, W.cap_v);
     WK_FREE_ARRAY(R, W.seeds, W.cap_seeds);
     WK_FREE_ARRAY(R, W.forced, W.cap_forced);
+    WK_FREE_ARRAY(R, W.swept, W.cap_swept);
     WK_FREE_ARRAY(R, W.comp, W.cap_comp);
     WK_FREE_ARRAY(R, W.cl, W.cap_cl);
     WK_FREE_ARRAY(R, W.pin, W.cap_pin);

@@ -438,7 +438,7 @@ static void sort_by_endpoints(const wk_wavefront *W, uint32_t *a, uint32_t n) {
 ** its own, 1e-5 (in time) before it reached the split's node (CGAL's
 ** node there); the arcs 0.43 off closed a cycle (exit 3 in 4 variants;
 ** tests/data/fuzz/invalid_naive_h_needles_fold.wpoly). */
-static uint32_t forced_track_node(wk_wavefront *W, uint32_t f, double t) {
+static uint32_t track_node_ahead(wk_wavefront *W, uint32_t f, double t) {
     const wk_wf_vertex *F = &W->v[f];
     wk_point p = wk_wf_pos(F, t), vel = F->vel;
     double v2 = vel.x * vel.x + vel.y * vel.y, e2 = W->eps_g * W->eps_g, best_h = INFINITY;
@@ -460,6 +460,48 @@ static uint32_t forced_track_node(wk_wavefront *W, uint32_t f, double t) {
         }
     }
     return k_best;
+}
+
+/* True if vertex f passed within eps_g of point q at some moment of the
+** last eps_t (its track p + vel h, h in [max(t0, t - eps_t) - t, 0]): it
+** left q no longer ago than the time tolerance. */
+static bool left_node_lately(const wk_wavefront *W, uint32_t f, wk_point q, double t) {
+    const wk_wf_vertex *F = &W->v[f];
+    wk_point p = wk_wf_pos(F, t), vel = F->vel;
+    double v2 = vel.x * vel.x + vel.y * vel.y, h_min = fmin(fmax(F->t0, t - W->eps_t) - t, 0);
+    double h = v2 > 0 ? ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2 : 0;
+    h = fmin(fmax(h, h_min), 0);
+    wk_point c = {p.x + vel.x * h, p.y + vel.y * h};
+    return wf_dist2(q, c) <= W->eps_g * W->eps_g;
+}
+
+static bool is_swept(const wk_wavefront *W, uint32_t u) {
+    for (uint32_t i = 0; i < W->n_swept; i++)
+        if (W->swept[i] == u) return true;
+    return false;
+}
+
+/* The node forced vertex f arrives at instead of a node of its own: for a
+** crack tip of plan_force_touching (W->swept) the one it left within eps_t
+** (farther than eps_g now), the latest if several, even when a node lies
+** ahead of it (a seed's own, where its split would have been); else the
+** one it runs into (track_node_ahead); WK_NONE if none. */
+static uint32_t forced_track_node(wk_wavefront *W, uint32_t f, double t) {
+    uint32_t k_best = WK_NONE;
+    if (!W->n_swept || !is_swept(W, f)) return track_node_ahead(W, f, t);
+    const wk_wf_vertex *F = &W->v[f];
+    wk_point p = wk_wf_pos(F, t), vel = F->vel;
+    double v2 = vel.x * vel.x + vel.y * vel.y, best_h = -INFINITY;
+    for (uint32_t k = 0; k < W->n_cl; k++) {
+        wk_point q = W->cl[k].p;
+        if (wf_dist2(q, p) <= W->eps_g * W->eps_g || !left_node_lately(W, f, q, t)) continue;
+        double h = v2 > 0 ? ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2 : 0;
+        if (h > best_h) {
+            best_h = h;
+            k_best = k;
+        }
+    }
+    return k_best != WK_NONE ? k_best : track_node_ahead(W, f, t);
 }
 
 static bool is_forced(const wk_wavefront *W, uint32_t u) {
@@ -821,6 +863,12 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
         /* a seed with a node of its own arrives there, wherever it is now */
         uint32_t own = own_node(W, W->comp[i]);
         if (own != WK_NONE) u->at = own;
+        /* a crack tip arrives at the node it left (plan_force_touching),
+        ** a seed too */
+        if (W->n_swept && is_swept(W, W->comp[i])) {
+            uint32_t k = forced_track_node(W, W->comp[i], t);
+            if (k != WK_NONE) u->at = k;
+        }
     }
     /* a free vertex whose two neighbours arrive at the same node closes a
     ** triangle of zero size with it: it arrives too */
@@ -1021,7 +1069,7 @@ static wk_status plan_seed_cuts(wk_wavefront *W, double t) {
     wk_run *R = W->R;
     for (uint32_t i = 0; i < W->n_seeds; i++) {
         const wk_wf_vertex *u = &W->v[W->seeds[i]];
-        if (u->ev_kind != WK_WF_SPLIT || u->at == WK_NONE) continue;
+        if (u->ev_kind != WK_WF_SPLIT || u->at == WK_NONE || (W->n_swept && is_swept(W, W->seeds[i]))) continue;
         uint32_t a = u->ev_a, k = u->at;
         const wk_wf_vertex *A = &W->v[a];
         if (!A->alive || A->next != u->ev_b || A->seen != W->stamp) continue;
@@ -1311,9 +1359,51 @@ static wk_status start_vertex_grid(wk_wavefront *W, double t) {
 ** between two nodes (where parallel edges met: an end of a collinear step
 ** of the other side) meets it too, unless it is an input vertex that
 ** never reaches the piece's line (wf_never_reaches_line).  Each becomes a node
-** (*again). */
+** (*again).
+** But a reflex vertex x whose two pieces lead from and back to one node k,
+** the tip of a crack outside the wavefront (sub-pieces k -> x -> k, or a
+** seed at a node of its own whose pieces k -> node -> k cancel), arrives
+** at k if it left k's place within eps_t (left_node_lately; W->swept,
+** forced_track_node; a seed's split then cuts nothing, plan_seed_cuts):
+** the crack opened within the time tolerance, from a place where eps_d
+** makes one point of everything, and closes there.  Kept apart from k, the
+** tip ends the crack's two pieces between two nodes, where a third piece
+** along them cancels one or the other: a 7-gon with a unit core and
+** spikes to 7.4e10 and 2.25e14 (eps_d 2.25e5, eps_t 225), where at
+** t = 0.34 a needle collapses at the core while the reflex vertex between
+** the two other needles (speed 1.25e8) runs 4.2e7 below it, 1 unit beside
+** edge 6's piece: made a node there, edge 6 cancelled the crack's far side
+** and faces 2 and 6 met at the core and at the tip
+** (tests/data/fuzz/invalid_naive_7gon_spikes_2e14.wpoly); with the first
+** spike at x = 6.3 the vertex (speed 4.4e9) splits edge 5 at the far
+** spike's tip 8.2e8 below at t = 0.19, in the core's group, and the
+** crack's two pieces cancelled into a second arc of faces 1, 2 beside the
+** vertex's own, crossing edges 5 and 6's arcs at the tip
+** (invalid_naive_7gon_spikes_seed_split.wpoly).  Both closed a cycle
+** (exit 3 in four variants).  At the core's node the vertex ends faces 1
+** and 2 there (the fifth variant's skeleton before; CGAL keeps two core
+** nodes 1.2 apart with the vertex's arc between them, which no node of
+** radius eps_d can). */
 static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
+    /* a crack tip at a node of its own (its pieces, not pinched, run to k
+    ** and back) */
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        uint32_t x = W->comp[i];
+        const wk_wf_vertex *X = &W->v[x];
+        uint32_t k = W->v[X->prev].at;
+        if (X->at == WK_NONE || !X->reflex || k == WK_NONE || k == X->at || W->v[X->next].at != k ||
+            X->prev == X->next || is_swept(W, x) || !left_node_lately(W, x, W->cl[k].p, t))
+            continue;
+        bool pinched = false;
+        for (uint32_t j = 0; j < W->n_pin; j++) pinched |= W->pin[j].piece == X->prev || W->pin[j].piece == x;
+        if (pinched) continue;
+        if (wf_push_u32(R, &W->swept, &W->n_swept, &W->cap_swept, x) != WK_OK ||
+            wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, x) != WK_OK)
+            return R->err.code;
+        *again = true;
+    }
+    if (*again) return WK_OK;
     uint32_t n_by = 0;
     if (W->n_sub >= WF_GRID_MIN) {
         if (WK_GROW(R, W->by_from, W->cap_by_from, W->n_sub) != WK_OK) return R->err.code;
@@ -1325,6 +1415,11 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
         const wk_wf_sub *x = &W->sub[i];
         if (x->dead || !IS_NODE(x->from) || IS_NODE(x->to)) continue;
         if (!has_reverse(W, x, n_by)) continue;
+        /* an untouched crack tip */
+        if (W->v[x->to].reflex && !is_swept(W, x->to) &&
+            left_node_lately(W, x->to, W->cl[NODE_OF(x->from)].p, t) &&
+            wf_push_u32(R, &W->swept, &W->n_swept, &W->cap_swept, x->to) != WK_OK)
+            return R->err.code;
         if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, x->to) != WK_OK)
             return R->err.code;
         *again = true;
@@ -2078,7 +2173,7 @@ static wk_status collapse_flat_cycle(wk_wavefront *W, uint32_t f, double t, bool
 ** to become a node.  Changes only the group's scratch state. */
 static wk_status plan_rounds(wk_wavefront *W, double t) {
     wk_run *R = W->R;
-    W->n_forced = 0;
+    W->n_forced = W->n_swept = 0;
     for (int round = 0;; round++) {
         bool again;
         if (plan(W, t, &again) != WK_OK) return R->err.code;

@@ -101,6 +101,8 @@ struct wk_wavefront {
     uint32_t *deferred; uint32_t n_deferred, cap_deferred; /* events within eps_t left for a later group */
     double t_last;     /* the latest seed time of the group (t <= t_last <= t + eps_t) */
     uint32_t *forced; uint32_t n_forced, cap_forced;
+    uint32_t *swept; uint32_t n_swept, cap_swept; /* forced crack tips that left their
+                          node within eps_t (wavefront_group.c, plan_force_touching) */
     uint32_t *comp; uint32_t n_comp, cap_comp;
     wk_wf_cluster *cl; uint32_t n_cl, cap_cl;
     wk_wf_pinch *pin; uint32_t n_pin, cap_pin;
