@@ -1003,6 +1003,34 @@ static wk_status extend_at_start(mc_state *A, wk_wavefront *W, uint32_t si) {
     return arm_segment(A, W, si);
 }
 
+/* A polygon's motorcycles that start at one point to the tolerance (a
+** reflex corner chamfered by an edge below eps_d: two reflex vertices
+** 5e-11 apart at a scale of 1,000) leave into different directions and
+** never crash there, as a PSLG node's corners do (exactly one origin,
+** motorcycle_graph.c).  M(P) lists them as a simultaneous crash at their
+** origin (trace length 0 within the slack) in which each waits for the
+** other only, so no start event ever cut them: v's trace stayed beyond
+** for good, v's split was never offered, and v was still alive when the
+** queue ran empty (the reference answered; stress seed 1 case 6131, a
+** crossing 12-gon whose notch tip is split into two vertices,
+** tests/data/degenerate/mc_origin_crash_tiny_edge.wpoly, and five more
+** tiny-edge stress cases).  Every such member is followed on along its
+** whole ray from t = 0 (extend_at_start); all of them are picked before
+** the first is extended, as extending one ends the others' "waiting only". */
+static wk_status extend_origin_crashes(mc_state *A, wk_wavefront *W, uint32_t n_graph) {
+    wk_run *R = A->R;
+    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W);
+    uint32_t *pick = NULL, n_pick = 0, cap_pick = 0;
+    wk_status st = WK_OK;
+    for (uint32_t si = 0; st == WK_OK && si < n_graph; si++) {
+        if (A->s[si].len > slack || !waits_on_waiting_only(A, W, si)) continue;
+        if ((st = WK_GROW(R, pick, cap_pick, n_pick + 1)) == WK_OK) pick[n_pick++] = si;
+    }
+    for (uint32_t k = 0; st == WK_OK && k < n_pick; k++) st = extend_at_start(A, W, pick[k]);
+    if (pick) WK_FREE_ARRAY(R, pick, cap_pick);
+    return st;
+}
+
 static wk_status mc_start(void *ud, wk_wavefront *W) {
     mc_state *A = ud;
     wk_run *R = A->R;
@@ -1081,6 +1109,7 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     /* a PSLG's traces that wait for each other only are followed on */
     for (uint32_t si = 0; st == WK_OK && P->pslg && si < n_graph; si++)
         if (waits_on_waiting_only(A, W, si)) st = extend_at_start(A, W, si);
+    if (st == WK_OK && !P->pslg) st = extend_origin_crashes(A, W, n_graph);
     /* reflex vertices of t = 0 that are not motorcycles (the collinear rule) */
     for (uint32_t v = 0; st == WK_OK && v < wk_wf_vertex_count(W); v++)
         if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && A->seg_of[v] == WK_NONE)
