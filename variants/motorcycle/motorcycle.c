@@ -1008,7 +1008,7 @@ static wk_status extend_at_start(mc_state *A, wk_wavefront *W, uint32_t si) {
 ** 5e-11 apart at a scale of 1,000) leave into different directions and
 ** never crash there, as a PSLG node's corners do (exactly one origin,
 ** motorcycle_graph.c).  M(P) lists them as a simultaneous crash at their
-** origin (trace length 0 within the slack) in which each waits for the
+** origin (trace length 0 within eps_d) in which each waits for the
 ** other only, so no start event ever cut them: v's trace stayed beyond
 ** for good, v's split was never offered, and v was still alive when the
 ** queue ran empty (the reference answered; stress seed 1 case 6131, a
@@ -1016,10 +1016,15 @@ static wk_status extend_at_start(mc_state *A, wk_wavefront *W, uint32_t si) {
 ** tests/data/degenerate/mc_origin_crash_tiny_edge.wpoly, and five more
 ** tiny-edge stress cases).  Every such member is followed on along its
 ** whole ray from t = 0 (extend_at_start); all of them are picked before
-** the first is extended, as extending one ends the others' "waiting only". */
+** the first is extended, as extending one ends the others' "waiting only".
+** Within eps_d, not WK_RELOCATE_SLACK eps_d: with that slack a star 24-gon
+** with a vertex 1e10 away (eps_d 10, slack 10^4) took its hub's crash
+** (traces 280 to 460 long, waiting for each other) for one at the
+** origins and extended them: the run then fell back to the reference (15
+** stars of tests/fuzz/far_vertex_sweep.py, seeds 1-4; none do now). */
 static wk_status extend_origin_crashes(mc_state *A, wk_wavefront *W, uint32_t n_graph) {
     wk_run *R = A->R;
-    double slack = WK_RELOCATE_SLACK * wk_wf_eps_d(W);
+    double slack = wk_wf_eps_d(W);
     uint32_t *pick = NULL, n_pick = 0, cap_pick = 0;
     wk_status st = WK_OK;
     for (uint32_t si = 0; st == WK_OK && si < n_graph; si++) {
