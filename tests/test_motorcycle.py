@@ -29,6 +29,9 @@ OWN_ANSWER_FILES = [
     # two reflex vertices 5e-11 apart: their motorcycles crashed at their
     # origin, each waiting for the other (motorcycle.c, extend_origin_crashes)
     "tests/data/degenerate/mc_origin_crash_tiny_edge.wpoly",
+    # a ghost whose B met F at the notched family's hub left a trace waiting
+    # at its end (motorcycle.c, mc_process_next, MC_DONE)
+    "tests/data/degenerate/mc_hub_ghost_done.wpoly",
 ]
 
 

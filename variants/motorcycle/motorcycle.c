@@ -1633,8 +1633,24 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
     if (!live(S)) return WK_OK;
     if (S->ev_kind == MC_DONE) { /* a ghost's B met F: its trace is swept */
-        drop(A, si);
-        return WK_OK;
+        /* A trace still waiting beyond at the swept part was not cut by B
+        ** (the notched family's hub, where the traces cross within 1e-12
+        ** of one point): dropped alone, the ghost left it waiting for good.
+        ** Its guard ended, so it is extended, as kill_ghost does.  Stress
+        ** seed 1 case 3614 (a notched 22-gon,
+        ** tests/data/degenerate/mc_hub_ghost_done.wpoly): vertex 3 died in
+        ** an edge event at t = 615.44 before the hub, its ghost's B met F at
+        ** 615.54, and trace 13, ending on it there, stayed beyond: vertex
+        ** 13's split of edge 6 at 616.29 was never offered, vertex 6 was
+        ** still alive when the queue ran empty and the reference answered
+        ** (8 notched cases of 4,156 in that sweep, all now this variant's
+        ** own skeleton, naive's). */
+        if (!S->ghost) {
+            drop(A, si);
+            return WK_OK;
+        }
+        if (kill_ghost(A, W, si, t) != WK_OK) return R->err.code;
+        return flush_extensions(A, W, t);
     }
     if (S->ev_kind == MC_BSWITCH) {
         /* B leaves its piece over one of its ends, onto the next piece; over
