@@ -164,6 +164,15 @@ bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     ** from the line's front, the node pinched edge 7 and the skeleton
     ** closed a cycle (exit 3; tests/data/fuzz/invalid_naive_h_needles_pass_by.wpoly) */
     if (o != 0 || e == W->v[u].ein || e == W->v[u].eout) return false;
+    /* A PSLG's cap has length 0 (engine/pslg.c): orient2d of its two equal
+    ** points is 0 for every point, so "exactly on the line" says nothing
+    ** there.  Taken as on it, the corners of a terminal facing another
+    ** terminal 1 away on the same line (tests/data/pslg/mc_node_contact.graphml,
+    ** (7,10) and (7,11)) counted as behind each other's caps: their meeting
+    ** at t = 0.5 was not planned, the traces ran on to the horizon and the
+    ** PSLG validator refused the skeleton (cap cycles meet). */
+    if (P->p[e].x == P->p[wk_polygon_next(P, e)].x && P->p[e].y == P->p[wk_polygon_next(P, e)].y)
+        return false;
     return rate < -WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (speed_rounding(W, &W->v[u]) + L->w);
 }
 

@@ -504,10 +504,14 @@ static uint32_t forced_track_node(wk_wavefront *W, uint32_t f, double t) {
     return k_best != WK_NONE ? k_best : track_node_ahead(W, f, t);
 }
 
-static bool is_forced(const wk_wavefront *W, uint32_t u) {
-    for (uint32_t i = 0; i < W->n_forced; i++)
-        if (W->forced[i] == u) return true;
-    return false;
+/* Vertex u is forced to become a node this round: pushed on W->forced and
+** marked, so that asking is O(1) (plan_arrivals asks for every vertex that
+** arrives nowhere in a group with forced vertices: a scan of the list each
+** time was O(vertices x forced)). */
+static wk_status wf_force(wk_wavefront *W, uint32_t u) {
+    if (wf_push_u32(W->R, &W->forced, &W->n_forced, &W->cap_forced, u) != WK_OK) return W->R->err.code;
+    W->v[u].forced = 1;
+    return WK_OK;
 }
 
 /* Step 1: a node for every seed's event point and every forced vertex,
@@ -583,7 +587,7 @@ static wk_status plan_shields(wk_wavefront *W, double t) {
             if (!wf_is_input_vertex(W, x) || wk_polygon_ring(W->P, x) == wk_polygon_ring(W->P, v)) continue;
             bool seed = false;
             for (uint32_t j = 0; j < W->n_seeds; j++) seed |= W->seeds[j] == x;
-            for (uint32_t j = 0; j < W->n_forced; j++) seed |= W->forced[j] == x;
+            seed |= W->v[x].forced;
             if (seed) continue;
             if (wf_input_cut_side(W, v, x, L, end, t) <= 0) continue;
             const wk_wf_vertex *X = &W->v[x];
@@ -851,7 +855,7 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
         double r = W->eps_g + speed * dt * (W->eps_g / W->eps_d);
         u->at = speed * dt > W->eps_g ? find_cluster_on_track(W, wk_wf_pos(u, t), u->vel, dt, r)
                                       : find_cluster_within(W, wk_wf_pos(u, t), r);
-        if (u->at == WK_NONE && W->n_forced && is_forced(W, W->comp[i]))
+        if (u->at == WK_NONE && u->forced)
             u->at = forced_track_node(W, W->comp[i], t);
         if (u->at != WK_NONE && W->n_shield && shield_of(W, W->comp[i], u->at)) u->at = WK_NONE;
         if (u->at != WK_NONE && (W->n_shield || u->gap_made) && bystander(W, W->comp[i], u->at, t)) {
@@ -1399,7 +1403,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
         for (uint32_t j = 0; j < W->n_pin; j++) pinched |= W->pin[j].piece == X->prev || W->pin[j].piece == x;
         if (pinched) continue;
         if (wf_push_u32(R, &W->swept, &W->n_swept, &W->cap_swept, x) != WK_OK ||
-            wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, x) != WK_OK)
+            wf_force(W, x) != WK_OK)
             return R->err.code;
         *again = true;
     }
@@ -1420,8 +1424,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
             left_node_lately(W, x->to, W->cl[NODE_OF(x->from)].p, t) &&
             wf_push_u32(R, &W->swept, &W->n_swept, &W->cap_swept, x->to) != WK_OK)
             return R->err.code;
-        if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, x->to) != WK_OK)
-            return R->err.code;
+        if (wf_force(W, x->to) != WK_OK) return R->err.code;
         *again = true;
     }
     if (*again) return WK_OK;
@@ -1450,8 +1453,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
             if (sq <= -W->eps_g || sq >= len + W->eps_g || fabs(off) > W->eps_g) continue;
             if (wf_never_reaches_line(W, W->comp[j], x->edge)) continue;
-            if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, W->comp[j]) != WK_OK)
-                return R->err.code;
+            if (wf_force(W, W->comp[j]) != WK_OK) return R->err.code;
             *again = true;
         }
     }
@@ -1527,7 +1529,7 @@ static double zip_arrival_radius(const wk_wavefront *W, uint32_t u, double t) {
 
 static wk_status zip_force(wk_wavefront *W, uint32_t u) {
     W->v[u].at = ZIP_MARK;
-    return wf_push_u32(W->R, &W->forced, &W->n_forced, &W->cap_forced, u);
+    return wf_force(W, u);
 }
 
 /* Step 5b's zipper.  Two antiparallel chains of pieces lying on one line
@@ -1676,8 +1678,7 @@ static wk_status plan_pairs(wk_wavefront *W, double t, bool *again) {
                     return WK_FAIL(R, WK_EALGO, W->P->name, 0,
                                    "wavefront: unresolved spike at (%.17g, %.17g), t = %.17g", c->p.x,
                                    c->p.y, t);
-                if (wf_push_u32(R, &W->forced, &W->n_forced, &W->cap_forced, far) != WK_OK)
-                    return R->err.code;
+                if (wf_force(W, far) != WK_OK) return R->err.code;
                 *again = true;
                 W->sub[in].pair_in = W->sub[best].pair_out = W->n_pair;
                 continue;
@@ -2173,6 +2174,9 @@ static wk_status collapse_flat_cycle(wk_wavefront *W, uint32_t f, double t, bool
 ** to become a node.  Changes only the group's scratch state. */
 static wk_status plan_rounds(wk_wavefront *W, double t) {
     wk_run *R = W->R;
+    /* the last plan's forced vertices (this group's earlier try, or the
+    ** last group's) are no longer marked */
+    for (uint32_t i = 0; i < W->n_forced; i++) W->v[W->forced[i]].forced = 0;
     W->n_forced = W->n_swept = 0;
     for (int round = 0;; round++) {
         bool again;

@@ -36,6 +36,10 @@ typedef struct wk_wf_vertex {
                           here, in ev_kind's padding: a byte more elsewhere
                           grew the vertex by 8 bytes (make regress: peak
                           tracked bytes +3.7%) */
+    uint8_t forced;    /* group scratch: in W->forced (wf_force; cleared by
+                          plan_rounds), so that plan_arrivals asks in O(1),
+                          not by a scan of the list per vertex; in the same
+                          padding (the vertex stays 120 bytes) */
     double ev_t;
     wk_point ev_p;
     uint32_t ev_a, ev_b; /* edge event: ev_b = next; split: target piece a->b */
@@ -43,6 +47,8 @@ typedef struct wk_wf_vertex {
     uint32_t seen;     /* group scratch: stamp of the last cycle walk */
     uint32_t cyc;      /* group scratch: index of its cycle among the touched ones */
 } wk_wf_vertex;
+/* gap_made and forced sit in padding: the vertex is 120 bytes on LP64 */
+_Static_assert(sizeof(void *) != 8 || sizeof(wk_wf_vertex) == 120, "wk_wf_vertex grew");
 
 /* A node of the group being resolved (event points within eps_d). */
 typedef struct wk_wf_cluster {

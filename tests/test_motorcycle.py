@@ -24,6 +24,15 @@ MAX_N = int(os.environ.get("WSKEL_MOTORCYCLE_MAX_N", "2000"))
 SEEDS = int(os.environ.get("WSKEL_MOTORCYCLE_SEEDS", "3"))
 NS = [n for n in (16, 64, 256, 1000, 2000) if n <= MAX_N]
 INVARIANTS_MAX_N = 256
+# Files the variant handed to the reference before a fix (test_own_answer_files)
+OWN_ANSWER_FILES = [
+    # two reflex vertices 5e-11 apart: their motorcycles crashed at their
+    # origin, each waiting for the other (motorcycle.c, extend_origin_crashes)
+    "tests/data/degenerate/mc_origin_crash_tiny_edge.wpoly",
+    # a ghost whose B met F at the notched family's hub left a trace waiting
+    # at its end (motorcycle.c, mc_process_next, MC_DONE)
+    "tests/data/degenerate/mc_hub_ghost_done.wpoly",
+]
 
 
 def families():
@@ -89,6 +98,24 @@ class Motorcycle(unittest.TestCase):
                 self.compare(t, "convex n=%d holes %d seed %d" % (n, h, seed), path, n <= 64)
         t.report(self)
         self.assertEqual(t.cases, 2 * SEEDS)
+
+    def test_own_answer_files(self):
+        """Inputs the variant once handed to the reference: it must answer
+        them itself (reference_fallbacks 0), with naive's skeleton."""
+        t = tl.Tally("motorcycle answers itself (no reference fallback)")
+        for f in OWN_ANSWER_FILES:
+            path = os.path.join(tl.ROOT, f)
+            self.assertTrue(os.path.exists(path), path)
+            rc, out, err = tl.run([tl.WSKEL, "--variant", "motorcycle", "--check", "--stats", path])
+            if rc != 0:
+                t.case(["%s: motorcycle exit %s: %s" % (f, rc, err.strip()[:200])], path)
+                continue
+            if int(tl.json.loads(out)["stats"]["reference_fallbacks"]):
+                t.case(["%s: handed to the reference variant" % f], path)
+                continue
+            self.compare(t, f, path, True)
+        t.report(self)
+        self.assertEqual(t.cases, len(OWN_ANSWER_FILES), t.summary())
 
     def test_weighted_is_refused(self):
         path = self.gen("star", 50, 1, ["--weights", "int"])

@@ -2,7 +2,8 @@
 """stress.py: the stress sweep (`make stress`, quick version `make stress-quick`).
 
     tests/stress/stress.py [--cases N] [--jobs J] [--timeout S] [--seed S]
-                           [--out DIR] [--classes A,B] [--quick] [--update-known]
+                           [--out DIR] [--classes A,B] [--variants V,W] [--quick]
+                           [--update-known]
 
 Case i of seed S is made by maker class i mod C (tests/stress/makers.py: every
 family of `bin/wskel-gen --list` and the degenerate makers) from
@@ -30,7 +31,9 @@ crash (killed by a signal), refused, other (another exit code), n/a
 (monotone on a polygon that is not monotone), unref (passed --check, but
 naive failed, so not compared).  The failures (exit2, exit3, differs,
 timeout, crash, refused, other) go to OUT/failures/NAME.wpoly, each with
-its outcomes in '#' lines, and to OUT/failures.tsv; invalid polygons to
+its outcomes in '#' lines, and to OUT/failures.tsv; the cases a variant
+handed to the reference ('fallback') to OUT/fallbacks/ and
+OUT/fallbacks.tsv; invalid polygons to
 OUT/invalid.tsv; the table of counts per class and variant to stdout and
 OUT/summary.txt (and OUT/summary.json).  Exit 1 if any case failed.
 
@@ -49,6 +52,10 @@ passes when every failure is listed; it lists every failure in its
 summary either way.  Full-sweep rows name the file where the case is kept
 with its evidence, relative to tests/data/stress/ (e.g.
 ../degenerate/NAME.wpoly, a file of KNOWN_FILES in tests/test_degenerate.py).
+
+--variants V,W runs only naive (the reference) and those variants, e.g. to
+count one variant's reference fallbacks over many cases; KNOWN rows of the
+other variants are not checked then.
 
 The programs are copied to a private directory first, so rebuilding bin/
 during a run changes nothing.  Environment: WSKEL_BIN, WSKEL_GEN_BIN.
@@ -187,7 +194,7 @@ def evaluate(poly, monotone, work):
         else:
             oc, msg = "other", "exit %d: %s" % (rc, msg)
         res[name] = [oc, msg, rc, round(dt, 3)]
-    if res["monotone"][0] in ("refused", "n/a"):
+    if "monotone" in res and res["monotone"][0] in ("refused", "n/a"):
         # A polygon exactly monotone in some direction must not be refused,
         # monotone by construction or not.
         try:
@@ -244,8 +251,21 @@ def run_case(i):
     return rec
 
 
+def select_variants(names):
+    """VARIANTS narrowed to naive (the reference every other is compared
+    with) and the named ones (--variants; all when none are named)."""
+    global VARIANTS
+    unknown = [n for n in names if n not in VARIANT_ARGS]
+    if unknown:
+        raise SystemExit("stress.py: unknown variant %s (variants: %s)"
+                         % (", ".join(unknown), ", ".join(v for v, _ in VARIANTS)))
+    if names:
+        VARIANTS = [(v, a) for v, a in VARIANTS if v == "naive" or v in names]
+
+
 def init_worker(cfg):
     CFG.update(cfg)
+    select_variants(cfg["variant_names"])
     CFG["classes"] = select_classes(cfg["class_names"])
     CFG["work"] = tempfile.mkdtemp(prefix="w-", dir=cfg["tmp"])
 
@@ -402,7 +422,10 @@ def check_known(summary, records, log):
         if rec["state"] == "ran":
             by_hash[rec["hash"]] = rec
     known_keys = {}
+    ran_variants = set(v for v, _ in VARIANTS)
     for fname, var, oc, msg in known:
+        if var not in ran_variants:  # --variants left it out
+            continue
         path = os.path.join(KNOWN_DIR, fname)
         if not os.path.exists(path):
             problems.append("KNOWN lists %s, which is not in tests/data/stress/" % fname)
@@ -501,6 +524,9 @@ def main(argv=None):
     ap.add_argument("--out", default=None,
                     help="output directory (default results/stress; --quick: a temporary one)")
     ap.add_argument("--classes", default="", help="comma-separated maker classes (default all)")
+    ap.add_argument("--variants", default="",
+                    help="comma-separated variants to run besides naive, the reference "
+                    "(default all); KNOWN rows of the others are not checked")
     ap.add_argument("--only", type=int, action="append", default=[],
                     help="run only case I (repeatable)")
     ap.add_argument("--mem-mb", type=int, default=4096,
@@ -516,6 +542,8 @@ def main(argv=None):
         return 0
     if a.update_known and not a.quick:
         ap.error("--update-known needs --quick")
+    if a.update_known and a.variants:
+        ap.error("--update-known needs every variant (no --variants)")
     ncases = a.cases if a.cases is not None else (300 if a.quick else 10000)
     tmp = tempfile.mkdtemp(prefix="wskel-stress-")
     try:
@@ -536,7 +564,8 @@ def main(argv=None):
             with open(os.path.join(out, ".gitignore"), "w") as f:
                 f.write("# written by tests/stress/stress.py: not under version control\n*\n")
         cfg = {"wskel": progs["wskel"], "timeout": a.timeout, "seed": a.seed, "tmp": tmp,
-               "mem_mb": a.mem_mb, "class_names": [c for c, _ in classes]}
+               "mem_mb": a.mem_mb, "class_names": [c for c, _ in classes],
+               "variant_names": [v for v in a.variants.split(",") if v]}
         init_worker(cfg)
         indices = a.only or list(range(ncases))
         what = "stress%s: %d cases, %d classes, %d variants, %d jobs, %g s per run" % (
@@ -548,6 +577,13 @@ def main(argv=None):
         records = []
         fails = open(os.path.join(out, "failures.tsv"), "w")
         invalid = open(os.path.join(out, "invalid.tsv"), "w")
+        # the cases a variant handed to the reference (not failures: listed
+        # to be looked into), each with its file in OUT/fallbacks/
+        fbdir = os.path.join(out, "fallbacks")
+        if os.path.isdir(fbdir):
+            shutil.rmtree(fbdir)
+        fb = open(os.path.join(out, "fallbacks.tsv"), "w")
+        fb.write("case\tclass\tvariant\tseconds\tmade\n")
         fails.write("case\tclass\tvariant\toutcome\texit\tseconds\tmessage\tmade\n")
         invalid.write("case\tclass\tstate\tmessage\tmade\n")
         step = max(1, len(indices) // 20)
@@ -567,11 +603,22 @@ def main(argv=None):
                                 rec["name"], rec["cls"], v, r[0], r[2], r[3], short(r[1], 400),
                                 rec["desc"]))
                     fails.flush()
+                if rec["state"] == "ran":
+                    fbv = [(v, r) for v, r in rec["res"].items() if r[0] == "fallback"]
+                    for v, r in fbv:
+                        fb.write("%s\t%s\t%s\t%s\t%s\n" % (rec["name"], rec["cls"], v, r[3],
+                                                            rec["desc"]))
+                    if fbv:
+                        os.makedirs(fbdir, exist_ok=True)
+                        with open(os.path.join(fbdir, rec["name"] + ".wpoly"), "w") as f:
+                            f.write(rec["text"])
+                        fb.flush()
                 if not a.quick and (k % step == 0 or k == len(indices)):
                     print("  %d/%d cases, %.0f s" % (k, len(indices), time.monotonic() - t0),
                           file=sys.stderr, flush=True)
         fails.close()
         invalid.close()
+        fb.close()
         wall = time.monotonic() - t0
         ran = sum(s["ran"] for s in summary.state.values())
         nfail = sum(1 for r in records if summary.failing(r))

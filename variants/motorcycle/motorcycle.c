@@ -1003,6 +1003,39 @@ static wk_status extend_at_start(mc_state *A, wk_wavefront *W, uint32_t si) {
     return arm_segment(A, W, si);
 }
 
+/* A polygon's motorcycles that start at one point to the tolerance (a
+** reflex corner chamfered by an edge below eps_d: two reflex vertices
+** 5e-11 apart at a scale of 1,000) leave into different directions and
+** never crash there, as a PSLG node's corners do (exactly one origin,
+** motorcycle_graph.c).  M(P) lists them as a simultaneous crash at their
+** origin (trace length 0 within eps_d) in which each waits for the
+** other only, so no start event ever cut them: v's trace stayed beyond
+** for good, v's split was never offered, and v was still alive when the
+** queue ran empty (the reference answered; stress seed 1 case 6131, a
+** crossing 12-gon whose notch tip is split into two vertices,
+** tests/data/degenerate/mc_origin_crash_tiny_edge.wpoly, and five more
+** tiny-edge stress cases).  Every such member is followed on along its
+** whole ray from t = 0 (extend_at_start); all of them are picked before
+** the first is extended, as extending one ends the others' "waiting only".
+** Within eps_d, not WK_RELOCATE_SLACK eps_d: with that slack a star 24-gon
+** with a vertex 1e10 away (eps_d 10, slack 10^4) took its hub's crash
+** (traces 280 to 460 long, waiting for each other) for one at the
+** origins and extended them: the run then fell back to the reference (15
+** stars of tests/fuzz/far_vertex_sweep.py, seeds 1-4; none do now). */
+static wk_status extend_origin_crashes(mc_state *A, wk_wavefront *W, uint32_t n_graph) {
+    wk_run *R = A->R;
+    double slack = wk_wf_eps_d(W);
+    uint32_t *pick = NULL, n_pick = 0, cap_pick = 0;
+    wk_status st = WK_OK;
+    for (uint32_t si = 0; st == WK_OK && si < n_graph; si++) {
+        if (A->s[si].len > slack || !waits_on_waiting_only(A, W, si)) continue;
+        if ((st = WK_GROW(R, pick, cap_pick, n_pick + 1)) == WK_OK) pick[n_pick++] = si;
+    }
+    for (uint32_t k = 0; st == WK_OK && k < n_pick; k++) st = extend_at_start(A, W, pick[k]);
+    if (pick) WK_FREE_ARRAY(R, pick, cap_pick);
+    return st;
+}
+
 static wk_status mc_start(void *ud, wk_wavefront *W) {
     mc_state *A = ud;
     wk_run *R = A->R;
@@ -1081,6 +1114,7 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     /* a PSLG's traces that wait for each other only are followed on */
     for (uint32_t si = 0; st == WK_OK && P->pslg && si < n_graph; si++)
         if (waits_on_waiting_only(A, W, si)) st = extend_at_start(A, W, si);
+    if (st == WK_OK && !P->pslg) st = extend_origin_crashes(A, W, n_graph);
     /* reflex vertices of t = 0 that are not motorcycles (the collinear rule) */
     for (uint32_t v = 0; st == WK_OK && v < wk_wf_vertex_count(W); v++)
         if (wk_wf_alive(W, v) && wk_wf_reflex(W, v) && A->seg_of[v] == WK_NONE)
@@ -1599,8 +1633,24 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
     if (!live(S)) return WK_OK;
     if (S->ev_kind == MC_DONE) { /* a ghost's B met F: its trace is swept */
-        drop(A, si);
-        return WK_OK;
+        /* A trace still waiting beyond at the swept part was not cut by B
+        ** (the notched family's hub, where the traces cross within 1e-12
+        ** of one point): dropped alone, the ghost left it waiting for good.
+        ** Its guard ended, so it is extended, as kill_ghost does.  Stress
+        ** seed 1 case 3614 (a notched 22-gon,
+        ** tests/data/degenerate/mc_hub_ghost_done.wpoly): vertex 3 died in
+        ** an edge event at t = 615.44 before the hub, its ghost's B met F at
+        ** 615.54, and trace 13, ending on it there, stayed beyond: vertex
+        ** 13's split of edge 6 at 616.29 was never offered, vertex 6 was
+        ** still alive when the queue ran empty and the reference answered
+        ** (8 notched cases of 4,156 in that sweep, all now this variant's
+        ** own skeleton, naive's). */
+        if (!S->ghost) {
+            drop(A, si);
+            return WK_OK;
+        }
+        if (kill_ghost(A, W, si, t) != WK_OK) return R->err.code;
+        return flush_extensions(A, W, t);
     }
     if (S->ev_kind == MC_BSWITCH) {
         /* B leaves its piece over one of its ends, onto the next piece; over
