@@ -393,6 +393,22 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
                                                   wk_speed_rounding(V->v, wu), fabs(L->w), V->t0,
                                                   A->t0, D->v[A->next].t0))
             return WK_OK;
+        /* Born behind the line (it crossed it before its birth, at
+        ** t_c <= t0), behind by more than rounding now and receding, and an
+        ** end of the piece made after its birth: it was never in front of
+        ** the line, and the piece is near it only because that end came
+        ** out of a point near it (the rule above, with the vertex's birth
+        ** for t_c).  The H with needles at 1e6: vertex 12 (edges 11 and 1,
+        ** the sides of a needle 1e6 long), born at t = 1.0e-6 1.2e-5 behind
+        ** edge 2's line, "penetrated" at t = 1.0e-5 the piece of edge 2 whose
+        ** start was made then, 3e-5 (eps_d 9e-3) away: two pieces left the
+        ** point side by side (the reference;
+        ** tests/data/fuzz/invalid_naive_h_needles.wpoly, _fold.wpoly). */
+        double tc = t - g0 / rate, a0 = A->t0, b0 = D->v[A->next].t0;
+        if (wu > 0 && tc <= V->t0 && V->t0 < t && (a0 > V->t0 || b0 > V->t0) &&
+            wk_passed_line_before_piece(df_pos(V, t), t, g0, rate, wk_speed_rounding(V->v, wu),
+                                        fabs(L->w), -INFINITY, a0, b0))
+            return WK_OK;
     }
     /* The vertex must meet the piece from the unswept side: one of its own
     ** pieces leaves it into that side or along the line (n . direction >
