@@ -102,9 +102,13 @@ wk_status wf_terminate(wk_wavefront *W, uint32_t v, uint32_t sk) {
 /* The rate term of a moving vertex's rounding: a vertex of speed s between
 ** edges of least weight wu is placed with an error growing like s + s^2 / wu
 ** per unit of time (its velocity is built from the two offset lines). */
-static double speed_rounding(const wk_wavefront *W, const wk_wf_vertex *U) {
-    double s = fabs(U->vel.x) + fabs(U->vel.y), wu = fmin(W->L[U->ein].w, W->L[U->eout].w);
+double wk_speed_rounding(wk_point vel, double wu) {
+    double s = fabs(vel.x) + fabs(vel.y);
     return s + s * s / wu;
+}
+
+static double speed_rounding(const wk_wavefront *W, const wk_wf_vertex *U) {
+    return wk_speed_rounding(U->vel, fmin(W->L[U->ein].w, W->L[U->eout].w));
 }
 
 static bool behind_offset_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
@@ -146,6 +150,13 @@ static bool behind_offset_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
 ** Only input vertices: a constructed vertex's place is a node eps_d wide,
 ** and one eps_d behind the line is not near the piece anyway.  The split
 ** test asks it too (wk_wf_split_test). */
+/* A vertex exactly on an input line (not its own), receding from it at
+** rate by more than its rounding (speed_round, the line's weight w): behind
+** the line at every t > 0 (wf_never_reaches_line). */
+static bool on_line_receding(double rate, double speed_round, double w) {
+    return rate < -WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (speed_round + w);
+}
+
 bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     const wk_polygon *P = W->P;
     if (u >= P->n || W->v[u].t0 != 0) return false;
@@ -173,13 +184,20 @@ bool wf_never_reaches_line(const wk_wavefront *W, uint32_t u, uint32_t e) {
     ** PSLG validator refused the skeleton (cap cycles meet). */
     if (P->p[e].x == P->p[wk_polygon_next(P, e)].x && P->p[e].y == P->p[wk_polygon_next(P, e)].y)
         return false;
-    return rate < -WK_SPLIT_SIDE_ULPS * DBL_EPSILON * (speed_rounding(W, &W->v[u]) + L->w);
+    return on_line_receding(rate, speed_rounding(W, &W->v[u]), L->w);
 }
 
 bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t u, wk_point vel,
                                         const wk_offset_line *L, uint32_t e) {
-    if (wk_orient2d_counted(R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]) >= 0) return false;
-    return L->nx * vel.x + L->ny * vel.y - L->w <= 0;
+    int o = wk_orient2d_counted(R, P->p[e], P->p[wk_polygon_next(P, e)], P->p[u]);
+    double rate = L->nx * vel.x + L->ny * vel.y - L->w;
+    if (o < 0) return rate <= 0;
+    /* exactly on the line and receding, as wf_never_reaches_line (positive
+    ** weights: the rounding bound needs them) */
+    uint32_t ein = wk_polygon_prev(P, u);
+    double wu = fmin(P->w[ein], P->w[u]);
+    if (o != 0 || e == ein || e == u || !(wu > 0) || !(L->w > 0)) return false;
+    return on_line_receding(rate, wk_speed_rounding(vel, wu), L->w);
 }
 
 int wf_input_cut_side(const wk_wavefront *W, uint32_t v, uint32_t x, const wk_offset_line *L, int end,
@@ -353,13 +371,21 @@ static bool wf_passed_before_piece(const wk_wavefront *W, uint32_t vi, uint32_t 
                                    double rate) {
     const wk_wf_vertex *V = &W->v[vi];
     if (!(d0 < 0) || !(rate < 0)) return false;
-    double tc = W->t_now - d0 / rate;
+    return wk_passed_line_before_piece(wk_wf_pos(V, W->t_now), W->t_now, d0, rate,
+                                       speed_rounding(W, V), W->L[W->v[a].eout].w, V->t0,
+                                       W->v[a].t0, W->v[W->v[a].next].t0);
+}
+
+bool wk_passed_line_before_piece(wk_point pv, double t_now, double d0, double rate,
+                                 double speed_round, double w, double v_t0, double a_t0,
+                                 double b_t0) {
+    if (!(d0 < 0) || !(rate < 0)) return false;
+    double tc = t_now - d0 / rate;
     /* behind by more than rounding (as behind_offset_line): t_c is real */
-    wk_point pv = wk_wf_pos(V, W->t_now);
     double bar = WK_SPLIT_SIDE_ULPS * DBL_EPSILON *
-                 (fabs(pv.x) + fabs(pv.y) + (speed_rounding(W, V) + W->L[W->v[a].eout].w) * W->t_now);
-    if (!(V->t0 < tc) || !(-d0 > bar)) return false;
-    return W->v[a].t0 > tc || W->v[W->v[a].next].t0 > tc;
+                 (fabs(pv.x) + fabs(pv.y) + (speed_round + w) * t_now);
+    if (!(v_t0 < tc) || !(-d0 > bar)) return false;
+    return a_t0 > tc || b_t0 > tc;
 }
 
 void wk_wf_split_begin(const wk_wavefront *W, uint32_t v, wk_wf_split_search *s) {

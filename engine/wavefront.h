@@ -141,8 +141,12 @@ void wk_wf_near_split(wk_wavefront *W, uint32_t v);
 ** strictly behind e's input line (an exact orientation) and does not
 ** approach the line (n . vel - w <= 0): it is within eps_d of the piece only
 ** because the input puts it there (a crack outside the polygon between
-** them, the chamfer of a reflex corner shorter than eps_d).  For a variant
-** with its own wavefront, so that its contacts follow the engine's. */
+** them, the chamfer of a reflex corner shorter than eps_d); or when it lies
+** exactly on that line (e not one of its own edges, weights positive) and
+** recedes from it by more than its rounding (wf_never_reaches_line's rule:
+** the H with needles whose edges 3 and 7 are collinear and face each
+** other).  For a variant with its own wavefront, so that its contacts
+** follow the engine's. */
 bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t u, wk_point vel,
                                         const wk_offset_line *L, uint32_t e);
 
@@ -158,6 +162,26 @@ bool wk_input_vertex_never_reaches_line(wk_run *R, const wk_polygon *P, uint32_t
 ** engine's). */
 int wk_input_cut_side(const wk_polygon *P, uint32_t v, wk_point vv, uint32_t x, wk_point vx,
                       const wk_offset_line *L, int end, double t);
+
+/* The rounding rate of a vertex moving at vel between edges whose least
+** weight is wu (> 0): its place is off by up to s + s^2 / wu per unit of
+** time, s = |vel|_1 (its velocity is solved from its edges' normals, with
+** condition about s / wu). */
+double wk_speed_rounding(wk_point vel, double wu);
+
+/* The rule of the split test for a vertex behind a piece's line
+** (wavefront.c, wf_passed_before_piece): a vertex at pv (relative
+** coordinates) at t_now, born at v_t0, behind the offset line of weight w
+** by d0 < 0 and receding from it (rate < 0; speed_round its
+** wk_speed_rounding), crossed the line at t_c = t_now - d0 / rate.  True
+** (no contact with the piece) if it existed then, is behind by more than
+** rounding, and an end of the piece (born at a_t0, b_t0) was made after
+** t_c: the piece did not reach there when the vertex crossed.  For a
+** variant with its own wavefront, so that its contacts follow the
+** engine's. */
+bool wk_passed_line_before_piece(wk_point pv, double t_now, double d0, double rate,
+                                 double speed_round, double w, double v_t0, double a_t0,
+                                 double b_t0);
 
 /* ------------------------------------- rays along a segment (wavefront_ray.c)
 ** For finders that follow a moving Steiner vertex along a static segment

@@ -155,6 +155,25 @@ class Deforming(unittest.TestCase):
         t.report(self, list_skipped=["handed to the reference variant (not compared)"])
         self.assertEqual(t.cases, len(self.ELLIPSES), t.summary())  # none handed on
 
+    # A random star (bin/wskel-gen star, unit weights) where the variant handed
+    # the polygon to the reference: at t = 0.2506 a spike's tip split the
+    # piece of edge 400 1.9e-5 from its start, vertex 11362, whose lines and
+    # edge 254's cross there at 0.09 rad; 11362 lay 1.7e-6 (eps_d 2.8e-6)
+    # behind the line of edge 254's new piece, which it had crossed at
+    # t = 0.2498, before that piece's end was made: taken as a penetration,
+    # two pieces left the point side by side.  Now the engine's rule
+    # (wk_passed_line_before_piece): no contact, and naive's skeleton.
+    STARS = ((10000, 7),)
+
+    def test_star_same_as_naive(self):
+        t = tl.Tally("deforming vs naive, stars")
+        for n, seed in self.STARS:
+            path = self.gen("star", n, seed, "unit")
+            self.assertIsNotNone(path)
+            self.compare(t, "star n=%d seed %d" % (n, seed), path, False)
+        t.report(self, list_skipped=["handed to the reference variant (not compared)"])
+        self.assertEqual(t.cases, len(self.STARS), t.summary())  # none handed on
+
     @staticmethod
     def flat_ellipse(n, a, b, seed):
         """n random points on the ellipse (x/a)^2 + (y/b)^2 = 1, counter-clockwise,
@@ -307,14 +326,12 @@ class Deforming(unittest.TestCase):
     FUZZ_FALLBACK_FILES = {
         "ealgo_arrangement_pinch.wpoly", "ealgo_arrangement_still_alive.wpoly",
         "ealgo_holes_vertices_1e-10_apart.wpoly",
-        "invalid_all_but_monotone_large_coordinates.wpoly",
-        "invalid_naive_h_needles.wpoly",
         "mismatch_arrangement_motorcycle_holes_touching.wpoly",
         "needle_vertex_beyond_edge.wpoly", "ub_deforming_nan_step.wpoly",
         # the variants fuzz run of 2026-12-03 (naive's exit 3 fixed in the engine;
         # deforming's own run still gives up on these)
         "invalid_naive_comb_spike_2bbaff18.wpoly", "invalid_naive_comb_spike_facbd269.wpoly",
-        "invalid_naive_h_needles_pass_by.wpoly", "invalid_naive_h_needles_fold.wpoly",
+        "invalid_naive_h_needles_fold.wpoly",
         # issue 11's cross with far vertices (naive's exit 3 fixed in the engine,
         # plan_arrivals' track_span; deforming's own run gives up on it, before and after)
         "invalid_naive_cross_far_sliver_tip.wpoly",
@@ -325,6 +342,15 @@ class Deforming(unittest.TestCase):
         # the 7-gon crack tips (issue 11: naive's exit 3 fixed in the engine's
         # plan_force_touching; deforming's own run still gives up on these)
         "invalid_naive_7gon_spikes_2e14.wpoly", "invalid_naive_7gon_spikes_seed_split.wpoly"}
+    # answered since session deformstar: invalid_naive_h_needles (a vertex born
+    # behind the piece's line, predict.c), invalid_all_but_monotone_large_coordinates
+    # and invalid_naive_h_needles_pass_by (a vertex on an input line facing the
+    # piece's, predict.c facing_on_one_line; the engine's on-the-line rule in
+    # wk_input_vertex_never_reaches_line); both valid, the first = naive, the
+    # second = naive in the fuzz oracle (same_skeleton) but not at
+    # compare_skeletons' 1e-7 diagonals: two nodes 6e-7 apart in time (eps_t
+    # 3e-6) and 1.25 in space, on the track of a vertex of speed 2e6, are one
+    # node here
 
     def test_fuzz_files_fallbacks(self):
         data = os.path.join(tl.DATA, "fuzz")
@@ -358,8 +384,9 @@ class Deforming(unittest.TestCase):
                     else "the variant must answer it itself"))
         self.assertEqual(fails, [])
         self.assertLessEqual(self.FUZZ_FALLBACK_FILES, set(names))
-        # 14 answered at 2026-12-03 (the width bound refuses 18 of the files)
-        self.assertGreaterEqual(answered, 12)
+        # 14 answered at 2026-12-03 (the width bound refuses 18 of the files),
+        # 17 since session deformstar
+        self.assertGreaterEqual(answered, 17)
 
     def roof(self, pts, ws, height, *extra):
         path = tl.write_wpoly(os.path.join(self.tmp, "roof.wpoly"), pts, ws)

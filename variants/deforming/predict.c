@@ -305,6 +305,32 @@ static double shared_end_root(const df_state *D, uint32_t p, uint32_t a, double 
     return err_c < err_p ? tc : tr;
 }
 
+/* Input edges f and e lie on one input line (exact orientations), facing
+** each other (antiparallel), both of positive weight: a vertex on f's
+** offset line is (w_f + w_e) t behind e's offset line at every t > 0, and
+** never meets e's piece.  The engine's split test asks reflex vertices
+** only, and an input vertex on e's input line is its rule
+** (wk_input_vertex_never_reaches_line); this variant asks every vertex,
+** and the vertex the split of a reflex vertex on f makes there is no input
+** vertex: in the H with needles whose edges 3 and 7 are collinear and
+** face each other, reflex vertex 3 split edge 6 at t = 8e-6 and the new
+** vertex of edges 6 and 3, 1.6e-5 (eps_d 3e-3) behind edge 7's line,
+** "penetrated" edge 7's piece: two pieces left the point side by side
+** (the reference; tests/data/fuzz/invalid_naive_h_needles_pass_by.wpoly).
+** Cheap tests first (directions within WK_PARALLEL_SIN of antiparallel),
+** then the exact orientations. */
+static bool facing_on_one_line(const df_state *D, uint32_t f, uint32_t e) {
+    const wk_offset_line *Lf = &D->L[f], *Le = &D->L[e];
+    if (f == e || !(Lf->w > 0) || !(Le->w > 0)) return false;
+    if (!(Lf->ux * Le->ux + Lf->uy * Le->uy < 0) ||
+        !(fabs(Lf->ux * Le->uy - Lf->uy * Le->ux) <= WK_PARALLEL_SIN))
+        return false;
+    const wk_polygon *P = D->P;
+    wk_point a = P->p[e], b = P->p[wk_polygon_next(P, e)];
+    return wk_orient2d_counted(D->R, a, b, P->p[f]) == 0 &&
+           wk_orient2d_counted(D->R, a, b, P->p[wk_polygon_next(P, f)]) == 0;
+}
+
 /* Penetration of vertex p through the piece a -> next(a) within [t, t1]. */
 static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t, double t1,
                                   double eps_c) {
@@ -345,6 +371,45 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
     if (g0 <= eps_c && p < D->P->n && V->t0 == 0 &&
         wk_input_vertex_never_reaches_line(D->R, D->P, p, V->v, L, A->eout))
         return WK_OK;
+    /* on its own edge's input line, which faces the piece's (see there) */
+    if (t > 0 && (facing_on_one_line(D, V->ein, A->eout) || facing_on_one_line(D, V->eout, A->eout)))
+        return WK_OK;
+    /* Behind the line by more than rounding and receding, having crossed
+    ** it at t_c before an end of the piece was made: the piece was not
+    ** there when the vertex crossed its line, and is near it now only
+    ** because that end came out of a point near the vertex (the engine's
+    ** rule, wk_passed_line_before_piece).  Star n = 10^4 seed 7
+    ** (bin/wskel-gen star), t = 0.2506: a spike's tip (edges 254, 255)
+    ** split the piece of edge 400 1.9e-5 from its start, vertex 11362
+    ** (edges 325, 400), the lines of 254 and 400 crossing there at 0.09 rad,
+    ** so 11362 lay 1.7e-6 (eps_d 2.8e-6) behind the line of the new piece
+    ** of edge 254, which it had crossed at t = 0.2498; taken as a
+    ** penetration, two pieces left the point side by side (the reference;
+    ** tests/test_deforming.py test_star_same_as_naive).  A wall (weight 0)
+    ** has no rounding bound: the rule does not apply. */
+    if (g0 < 0 && rate < 0) {
+        double wu = fmin(fabs(D->L[V->ein].w), fabs(D->L[V->eout].w));
+        if (wu > 0 && wk_passed_line_before_piece(df_pos(V, t), t, g0, rate,
+                                                  wk_speed_rounding(V->v, wu), fabs(L->w), V->t0,
+                                                  A->t0, D->v[A->next].t0))
+            return WK_OK;
+        /* Born behind the line (it crossed it before its birth, at
+        ** t_c <= t0), behind by more than rounding now and receding, and an
+        ** end of the piece made after its birth: it was never in front of
+        ** the line, and the piece is near it only because that end came
+        ** out of a point near it (the rule above, with the vertex's birth
+        ** for t_c).  The H with needles at 1e6: vertex 12 (edges 11 and 1,
+        ** the sides of a needle 1e6 long), born at t = 1.0e-6 1.2e-5 behind
+        ** edge 2's line, "penetrated" at t = 1.0e-5 the piece of edge 2 whose
+        ** start was made then, 3e-5 (eps_d 9e-3) away: two pieces left the
+        ** point side by side (the reference;
+        ** tests/data/fuzz/invalid_naive_h_needles.wpoly, _fold.wpoly). */
+        double tc = t - g0 / rate, a0 = A->t0, b0 = D->v[A->next].t0;
+        if (wu > 0 && tc <= V->t0 && V->t0 < t && (a0 > V->t0 || b0 > V->t0) &&
+            wk_passed_line_before_piece(df_pos(V, t), t, g0, rate, wk_speed_rounding(V->v, wu),
+                                        fabs(L->w), -INFINITY, a0, b0))
+            return WK_OK;
+    }
     /* The vertex must meet the piece from the unswept side: one of its own
     ** pieces leaves it into that side or along the line (n . direction >
     ** -WK_PARALLEL_SIN, on the input directions; along the line: the two
