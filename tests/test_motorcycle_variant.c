@@ -72,3 +72,33 @@ Test(motorcycle_variant, monotone_extensions_stay_few, .timeout = 120) {
     wk_polygon_free(&R, P);
     ASSERT_CLEAN_CLOSE(R);
 }
+
+/* The piece grid's listings stay linear (piece_grid.c, PG_BUDGET_PER_VERTEX
+** and PG_MOVE_CELLS).  Random polygons are nearly radial spikes: their
+** pieces are about 0.3 sqrt(n) cells long and their vertices move at
+** 10^3..10^5, so a build listed each piece along its whole path (random
+** 10^4 seed 1, check_invariants so that every shot takes the grid: one
+** build of 587,004 entries, 59 per vertex; random 3*10^5 without it: 261M
+** entries, 3.05 GB).  Now no build lists more than 8 entries per input
+** vertex in all (the bound), here 2 builds and 159,914 entries. */
+Test(motorcycle_variant, piece_grid_listings_stay_linear, .timeout = 300) {
+    wk_run R;
+    wk_run_init(&R);
+    R.opt.check_invariants = true;
+    const wk_variant *V = variant("motorcycle");
+    R.variant = V;
+    wk_polygon *P = NULL;
+    const uint32_t n = 10000;
+    cr_assert_eq(gen(&R, "random", n, -1, 1, NULL, &P), WK_OK);
+    wk_skeleton *S = NULL;
+    cr_assert_eq(wk_solve(&R, V, P, &S, NULL, NULL), WK_OK, "%s", R.err.msg);
+    cr_assert_eq(counter(&R, "reference_fallbacks"), 0);
+    uint64_t builds = counter(&R, "piece_grid_builds"), entries = counter(&R, "piece_grid_entries");
+    cr_assert_gt(builds, 0);
+    cr_assert_gt(entries, 0);
+    cr_assert_leq(entries, builds * 8 * n, "%llu entries in %llu builds",
+                  (unsigned long long)entries, (unsigned long long)builds);
+    wk_skeleton_free(&R, S);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}

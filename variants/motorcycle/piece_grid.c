@@ -6,10 +6,13 @@
 ** every current piece (a alive, b = next(a)) has an entry (a, b) of build
 ** G->gen in every cell its position at t comes within margin of (it was
 ** listed at the build, or at a shot after the group that made it current,
-** with a hull over [then, t_e]), or is on the overflow list, or has an end
-** on the pending list (a fresh vertex of a group since the last listing;
-** flush_pending lists those pieces before a grid shot reads a cell); cells
-** of another gen hold no entries.
+** with a hull over [then, t_x], t_x = t_e or, for a fast piece, its time
+** on the expiry heap, where it stays until relist_expired lists it again
+** from a shot's time, before that shot reads a cell), or is on the
+** overflow list, or has an end on the pending list (a fresh vertex of a
+** group since the last listing; flush_pending lists those pieces before a
+** grid shot reads a cell); cells of another gen hold no entries.  At most
+** G->budget entries are listed per build (give_up drops the grid).
 */
 #include "piece_grid.h"
 
@@ -30,6 +33,28 @@
 ** tolerance: a cost bound (an O(n) hull per piece made builds quadratic on
 ** nearly straight reflex corners, whose vertices are very fast). */
 #define PG_OVERFLOW_CELLS 64.0
+/* An end of a listed piece moves at most this many cells (its speed times
+** the listing's time) before the piece is listed again: a faster piece is
+** listed for a shorter time than the window and goes on the expiry heap,
+** and the first grid shot after that time lists it again from its own time
+** if it is still current.  Not a tolerance: a cost bound.  Without it a
+** sharp reflex notch (speed 10^3..10^5 on random 3*10^5, whose vertices
+** are nearly collinear spikes) was listed along its whole path over the
+** window, across the box: 261M entries in one build, 3.05 GB peak (README,
+** Cost, session mcgrid). */
+#define PG_MOVE_CELLS 2.0
+/* Entries a build may list over its window (the build, the fresh pieces,
+** the relistings), per input vertex, at least PG_BUDGET_MIN: the listing
+** that would pass it is not made, the grid is dropped (its cells freed)
+** and the shots walk cycles until they have tested twice the pieces that
+** the last try cost (so a run pays at most about three times the cheaper
+** of the two, as before).  Not a tolerance: a memory bound (issue 13: at
+** most 1 KiB per vertex in all).  Long pieces are what passes it: a piece
+** is listed in every cell along it, and on random 3*10^5 (nearly radial
+** spikes about 100 cells long) even with PG_MOVE_CELLS the build listed
+** 26.6M entries and every shot relisted about 10M more (README, Cost). */
+#define PG_BUDGET_PER_VERTEX 8u
+#define PG_BUDGET_MIN 65536u
 /* A build's cost estimate before any build: entries per input vertex. */
 #define PG_FIRST_EST 4u
 
@@ -43,6 +68,7 @@ void mc_pg_clear(wk_run *R, mc_piece_grid *G) {
     }
     WK_FREE_ARRAY(R, G->over, G->cap_over);
     WK_FREE_ARRAY(R, G->pending, G->cap_pending);
+    WK_FREE_ARRAY(R, G->exp, G->cap_exp);
     mc_pg_init(G);
 }
 
@@ -86,13 +112,43 @@ static wk_status grid_alloc(wk_run *R, mc_piece_grid *G, const wk_wavefront *W) 
     G->ch = Hd / G->ny;
     double w = wk_wf_line(W, 0)->w;
     G->window = PG_WINDOW_CELLS * fmax(G->cw, G->ch) / (w > 0 ? w : 1.0);
+    G->budget = (uint64_t)PG_BUDGET_PER_VERTEX * P->n;
+    if (G->budget < PG_BUDGET_MIN) G->budget = PG_BUDGET_MIN;
     G->cells = WK_NEW_ARRAY(R, mc_pg_cell, (size_t)G->nx * G->ny);
     if (!G->cells) return WK_ENOMEM;
     for (size_t c = 0; c < (size_t)G->nx * G->ny; c++) G->cells[c] = (mc_pg_cell){NULL, 0, 0, 0};
     return WK_OK;
 }
 
+/* Free every cell's entries (the cells stay, empty). */
+static void free_entries(wk_run *R, mc_piece_grid *G) {
+    size_t nc = (size_t)G->nx * G->ny;
+    for (size_t c = 0; c < nc; c++) {
+        WK_FREE_ARRAY(R, G->cells[c].e, G->cells[c].cap);
+        G->cells[c].n = G->cells[c].cap = 0;
+    }
+    G->cap_ids = 0;
+}
+
+/* A listing would have passed the budget: drop the grid, and let the
+** cycle walks test twice what this build's listings cost before the next
+** build. */
+static void give_up(wk_run *R, mc_piece_grid *G) {
+    free_entries(R, G);
+    G->valid = false;
+    G->full = false;
+    G->n_pending = 0;
+    G->n_exp = 0;
+    G->n_over = 0;
+    G->est = 2 * (G->listed > G->budget ? G->listed : G->budget);
+    G->since = 0;
+}
+
 static wk_status push_overflow(wk_run *R, mc_piece_grid *G, uint32_t a, uint32_t b) {
+    if (G->listed + 1 > G->budget) {
+        G->full = true;
+        return WK_OK;
+    }
     if (WK_GROW(R, G->over, G->cap_over, 2 * G->n_over + 2) != WK_OK) return WK_ENOMEM;
     G->over[2 * G->n_over] = a;
     G->over[2 * G->n_over + 1] = b;
@@ -107,12 +163,42 @@ static wk_status push(wk_run *R, mc_piece_grid *G, uint32_t c, uint32_t a, uint3
         C->gen = G->gen;
         C->n = 0;
     }
+    uint32_t cap = C->cap;
     if (WK_GROW(R, C->e, C->cap, 2 * C->n + 2) != WK_OK) return WK_ENOMEM;
+    G->cap_ids += C->cap - cap;
     C->e[2 * C->n] = a;
     C->e[2 * C->n + 1] = b;
     C->n++;
     G->listed++;
     return WK_OK;
+}
+
+/* The expiry heap (min by time; ties in any order: a relisting only adds
+** entries, and a shot's answer does not depend on their order). */
+static wk_status exp_push(wk_run *R, mc_piece_grid *G, double t, uint32_t a, uint32_t b) {
+    if (WK_GROW(R, G->exp, G->cap_exp, G->n_exp + 1) != WK_OK) return WK_ENOMEM;
+    uint32_t i = G->n_exp++;
+    while (i > 0 && G->exp[(i - 1) / 2].t > t) {
+        G->exp[i] = G->exp[(i - 1) / 2];
+        i = (i - 1) / 2;
+    }
+    G->exp[i] = (mc_pg_expiry){t, a, b};
+    return WK_OK;
+}
+
+static mc_pg_expiry exp_pop(mc_piece_grid *G) {
+    mc_pg_expiry top = G->exp[0], last = G->exp[--G->n_exp];
+    uint32_t i = 0, n = G->n_exp;
+    for (;;) {
+        uint32_t c = 2 * i + 1;
+        if (c >= n) break;
+        if (c + 1 < n && G->exp[c + 1].t < G->exp[c].t) c++;
+        if (!(G->exp[c].t < last.t)) break;
+        G->exp[i] = G->exp[c];
+        i = c;
+    }
+    if (n) G->exp[i] = last;
+    return top;
 }
 
 /* When piece a -> b collapses (its ends meet along its line; they move
@@ -191,7 +277,10 @@ static bool row_span(const mc_piece_grid *G, const hull_segs *H, uint32_t r, uin
 #define PG_SPAN_ROWS 32
 
 /* List piece a -> b in every cell its hull over [t0, min(t_e, collapse)]
-** meets (widened by margin); a piece whose hull would cover more than
+** meets (widened by margin), up to the time its faster end has moved
+** PG_MOVE_CELLS cells if that is earlier (then it goes on the expiry heap;
+** a piece too fast to be listed past a shot's reshoot goes on the overflow
+** list); a piece whose hull would cover more than
 ** PG_OVERFLOW_CELLS plus 4 cells per cell of its length (a vertex of very
 ** high speed: nearly straight reflex corners) goes on the overflow list
 ** instead, which every grid shot tests. */
@@ -199,6 +288,17 @@ static wk_status list_piece(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, 
                             uint32_t b, double t0) {
     double t1 = fmin(G->t_e, collapse_time(W, a, b, t0));
     if (t1 < t0) t1 = t0;
+    wk_point va = wk_wf_velocity(W, a), vb = wk_wf_velocity(W, b);
+    double speed = fmax(hypot(va.x, va.y), hypot(vb.x, vb.y));
+    double reach = PG_MOVE_CELLS * fmax(G->cw, G->ch);
+    bool expires = speed * (t1 - t0) > reach;
+    if (expires) {
+        /* the shot that relists it reshoots WK_RAY_RESHOOT_DELAY eps_t
+        ** later over the same listing: it must last longer than that */
+        t1 = t0 + reach / speed;
+        if (!(t1 - t0 >= 2.0 * WK_RAY_RESHOOT_DELAY * wk_wf_eps_t(W)))
+            return push_overflow(R, G, a, b);
+    }
     wk_point p[4] = {wk_wf_position(W, a, t0), wk_wf_position(W, b, t0),
                      wk_wf_position(W, a, t1), wk_wf_position(W, b, t1)};
     double m = G->margin, ylo = INFINITY, yhi = -INFINITY;
@@ -226,6 +326,10 @@ static wk_status list_piece(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, 
         }
     }
     if (cells > cap) return push_overflow(R, G, a, b);
+    if (G->full || (double)G->listed + cells > (double)G->budget) {
+        G->full = true;
+        return WK_OK;
+    }
     for (uint32_t r = r0; r <= r1; r++) {
         if (r - r0 < PG_SPAN_ROWS) {
             if (!has[r - r0]) continue;
@@ -237,7 +341,7 @@ static wk_status list_piece(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, 
         for (uint32_t c = c0; c <= c1; c++)
             if (push(R, G, r * G->nx + c, a, b) != WK_OK) return WK_ENOMEM;
     }
-    return WK_OK;
+    return expires ? exp_push(R, G, t1, a, b) : WK_OK;
 }
 
 static wk_status build(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, double t) {
@@ -250,10 +354,18 @@ static wk_status build(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, doubl
     G->listed = 0;
     G->n_over = 0;
     G->n_pending = 0; /* every alive piece is listed below */
-    for (uint32_t a = 0; a < wk_wf_vertex_count(W); a++)
+    G->n_exp = 0;
+    G->full = false;
+    /* capacity left by earlier builds in other cells counts too */
+    if (G->cap_ids > 4 * G->budget) free_entries(R, G);
+    for (uint32_t a = 0; a < wk_wf_vertex_count(W) && !G->full; a++)
         if (wk_wf_alive(W, a) && list_piece(R, G, W, a, wk_wf_next(W, a), t) != WK_OK)
             return WK_ENOMEM;
     wk_count(R, WK_VC_piece_grid_entries, G->listed);
+    if (G->full) {
+        give_up(R, G);
+        return WK_OK;
+    }
     G->est = G->listed;
     G->since = 0;
     G->valid = true;
@@ -308,9 +420,32 @@ static wk_status flush_pending(wk_run *R, mc_piece_grid *G, const wk_wavefront *
             G->n_pending = 0;
             return WK_ENOMEM;
         }
+        if (G->full) break;
     }
     G->n_pending = 0;
     wk_count(R, WK_VC_piece_grid_entries, G->listed - before);
+    if (G->full) give_up(R, G);
+    return WK_OK;
+}
+
+/* List again, from t, the current pieces whose listing ends before
+** `later` (the shot's reshoot time). */
+static wk_status relist_expired(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, double t,
+                                double later) {
+    uint64_t before = G->listed;
+    while (G->n_exp && G->exp[0].t < later) {
+        mc_pg_expiry e = exp_pop(G);
+        if (!wk_wf_alive(W, e.a) || wk_wf_next(W, e.a) != e.b) continue;
+        if (list_piece(R, G, W, e.a, e.b, t) != WK_OK) {
+            G->valid = false; /* a partial update is no index */
+            G->n_pending = 0;
+            G->n_exp = 0;
+            return WK_ENOMEM;
+        }
+        if (G->full) break;
+    }
+    wk_count(R, WK_VC_piece_grid_entries, G->listed - before);
+    if (G->full) give_up(R, G);
     return WK_OK;
 }
 
@@ -436,6 +571,8 @@ uint32_t mc_pg_shoot(wk_run *R, mc_piece_grid *G, const wk_wavefront *W, wk_poin
     /* the reshoot below (at `later`, within the window) reads the same
     ** listing: hulls from t cover it */
     if (G->valid && t >= G->t_b && G->n_pending) *st = flush_pending(R, G, W, t);
+    if (G->valid && t >= G->t_b && G->n_exp && *st == WK_OK)
+        *st = relist_expired(R, G, W, t, later);
     hit h = shoot_at(R, G, W, o, u, v, t, lambda0);
     if (h.a != WK_NONE && h.at_end && v != WK_NONE) {
         /* a hit at a vertex is ambiguous: again a moment later, when that

@@ -26,6 +26,21 @@
 ** nearly straight reflex corner) goes on an overflow list instead, tested
 ** by every grid shot.
 **
+** Fast and long pieces (issue 13, session mcgrid).  A piece is listed only
+** until its faster end has moved PG_MOVE_CELLS cells (or the window ends,
+** or it collapses); a piece cut short so goes on an expiry heap, and the
+** next grid shot after that time lists it again from the shot's time if it
+** is still current (its old entries stay: they are of a current piece, so
+** they are tested, and cost only memory until the next build).  And the
+** entries of one build, its fresh pieces and its relistings together are
+** bounded (PG_BUDGET_PER_VERTEX per input vertex): a listing that would pass
+** the bound is not made, the grid is dropped and its cells freed, and the
+** shots walk cycles until they have tested twice the bound (the build rule
+** below).  A grid only pays for pieces short against the box; on polygons
+** of long spikes (random, star: pieces about 0.3 sqrt(n) cells long, their
+** vertices at speeds 10^3..10^5) a build lists n^1.5 entries (random
+** 3*10^5: 261M entries, 3.05 GB, before the bound).
+**
 ** A shot walks the cells along the ray from where it starts (Amanatides-Woo,
 ** as engine/ray_shoot.c), tests the current pieces listed there with the
 ** engine's wk_wf_ray_hit_piece (the same bits as the walk over the cycle),
@@ -38,8 +53,9 @@
 ** never pay for a build.  So shots outside a valid window walk the cycle
 ** (wk_wf_ray_shoot's semantics: v's cycle, every alive piece with holes)
 ** until the pieces they tested since the last build reach the entries of
-** the last build (at first: 4 per input vertex); then the next shot builds.
-** Over a run that costs at most about twice the cheaper of the two.
+** the last build (at first: 4 per input vertex; after a build dropped at
+** the bound: twice the bound); then the next shot builds.  Over a run that
+** costs at most about twice the cheaper of the two.
 **
 ** Differences from the walk over v's cycle: pieces of other cycles are
 ** candidates too (as wk_wf_ray_shoot does with holes): the first piece a
@@ -55,6 +71,11 @@ typedef struct mc_pg_cell {
     uint32_t n, cap;     /* entries; capacity in ids */
     uint32_t gen;        /* entries are of build `gen`, else the cell is empty */
 } mc_pg_cell;
+
+typedef struct mc_pg_expiry {
+    double t;            /* the piece's listing covers it until t */
+    uint32_t a, b;
+} mc_pg_expiry;
 
 typedef struct mc_piece_grid {
     double x0, y0, cw, ch; /* cell (0, 0)'s lower-left corner, cell size */
@@ -73,6 +94,12 @@ typedef struct mc_piece_grid {
     uint32_t *pending;     /* fresh vertices of the groups since the last shot or build,
                               whose pieces are listed at the next grid shot */
     uint32_t n_pending, cap_pending;
+    struct mc_pg_expiry *exp; /* min-heap by time: pieces listed for less than the
+                                 window (fast ends), relisted by the shot after */
+    uint32_t n_exp, cap_exp;
+    uint64_t budget;       /* entries a build may list over its window, all listings */
+    uint64_t cap_ids;      /* the cells' capacity in ids, over all builds */
+    bool full;             /* a listing would have passed the budget */
 } mc_piece_grid;
 
 /* Empty, closable, no allocation. */
