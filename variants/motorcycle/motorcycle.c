@@ -1684,7 +1684,7 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
             ** and 6 with the switch due 3e-12 later each time and F not
             ** moving at all, for ever (the exact test, ev_t <= t, missed it). */
             const mc_seg *Sp = &A->s[si];
-            bool again = Sp->ev_kind == MC_SWITCH &&
+            bool again = Sp->ev_kind == MC_SWITCH && isfinite(Sp->ev_t) &&
                          (Sp->ev_t <= t || fabs(lambda_f(W, Sp, Sp->ev_t) - lambda_f(W, Sp, t)) <=
                                                wk_wf_eps_d(W));
             if (Sp->pa == old_pa && again) {
