@@ -1438,12 +1438,23 @@ static wk_status spawn_far(mc_state *A, wk_wavefront *W, uint32_t sj, double lam
 }
 
 /* The no-progress bound shared by the event loop and cut: *count steps at
-** the instant *at; more than 16 per trace and vertex at one instant means
-** the run repeats itself (exit 2 instead of a hang). */
-static bool over_budget(const mc_state *A, const wk_wavefront *W, double *at, uint64_t *count) {
+** the instant *at, that is within `within` after it; more than 16 per trace
+** and vertex at one instant means the run repeats itself (exit 2 instead of
+** a hang).  cut counts exact instants (within 0: its cut_at stamps need
+** *at to follow every new time); the event loop counts within eps_t, the
+** engine's simultaneity, as the engine's own bound does: a loop whose
+** events creep forward by rounding never repeats an exact time (the 7-gon
+** with spikes to 2.9e16 of tests/data/fuzz/timeout_motorcycle_7gon_spikes_
+** 2e16.wpoly: one switch event every 3e-12, eps_t 2.9e4, hung for minutes). */
+static bool over_budget(const mc_state *A, const wk_wavefront *W, double within, double *at,
+                        uint64_t *count) {
     double t = wk_wf_now(W);
-    *count = t == *at ? *count + 1 : 0;
-    *at = t;
+    if (t >= *at && t <= *at + within) {
+        (*count)++;
+    } else {
+        *count = 0;
+        *at = t;
+    }
     return *count > 16 * ((uint64_t)A->n_s + wk_wf_vertex_count(W)) + 1024;
 }
 
@@ -1460,7 +1471,7 @@ static wk_status cut(mc_state *A, wk_wavefront *W, uint32_t sj, uint32_t a, doub
     ** events' own bound never saw it.  Its cause (the re-cut test below,
     ** cut_at) is fixed; the budget stays as the safety net (issue 13). */
     if (t != A->cut_t || A->cut_instant == 0) A->cut_instant++;
-    if (over_budget(A, W, &A->cut_t, &A->cut_n))
+    if (over_budget(A, W, 0.0, &A->cut_t, &A->cut_n))
         return WK_FAIL(A->R, WK_EALGO, wk_wf_polygon(W)->name, 0,
                        "motorcycle: no progress at t = %.17g (traces cut again and again at one "
                        "crossing)",
@@ -1628,7 +1639,7 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
     uint32_t si = wk_event_queue_pop(R, &A->Q);
     mc_seg *S = &A->s[si];
     double t = wk_wf_now(W);
-    if (over_budget(A, W, &A->guard_t, &A->guard_n))
+    if (over_budget(A, W, wk_wf_eps_t(W), &A->guard_t, &A->guard_n))
         return WK_FAIL(R, WK_EALGO, wk_wf_polygon(W)->name, 0, "motorcycle: no progress at t = %.17g", t);
     wk_event ev = {t, 0, 0, si, WK_NONE, WK_NONE};
     if (!live(S)) return WK_OK;
@@ -1712,7 +1723,21 @@ static wk_status mc_process_next(void *ud, wk_wavefront *W) {
         if (own || jump || bounce) {
             if (place_f(A, W, si, t, true) != WK_OK) return R->err.code;
             seg_event(A, W, si);
-            if (A->s[si].pa == old_pa && A->s[si].ev_kind == MC_SWITCH && A->s[si].ev_t <= t) {
+            /* The shot put F back on the piece it left and F leaves it
+            ** again: now, or before it has moved eps_d along the trace (the
+            ** same place within the tolerance).  Either way F is where the
+            ** two pieces meet, and following it makes no progress: F is
+            ** unknown until the next group places it.  A fuzz finding
+            ** (tests/data/fuzz/timeout_motorcycle_7gon_spikes_2e16.wpoly, a
+            ** 7-gon about 1 wide with spikes out to 2.9e16, eps_d 2.9e7):
+            ** a trace 0.11 long, F at its origin bouncing between pieces 0
+            ** and 6 with the switch due 3e-12 later each time and F not
+            ** moving at all, for ever (the exact test, ev_t <= t, missed it). */
+            const mc_seg *Sp = &A->s[si];
+            bool again = Sp->ev_kind == MC_SWITCH && isfinite(Sp->ev_t) &&
+                         (Sp->ev_t <= t || fabs(lambda_f(W, Sp, Sp->ev_t) - lambda_f(W, Sp, t)) <=
+                                               wk_wf_eps_d(W));
+            if (Sp->pa == old_pa && again) {
                 unlink_f(A, si);
                 if (note_unknown(A, si) != WK_OK) return R->err.code;
             }
