@@ -691,6 +691,31 @@ static bool split_misses_piece(const wk_wavefront *W, uint32_t x, double t) {
     return sa < -WK_BEHIND_ULPS * ulp || sb < -WK_BEHIND_ULPS * ulp;
 }
 
+/* True if split seed S, cutting a piece of line l at q, starts its two new
+** vertices on l in reversed order: each starts where its lines meet when
+** that is within eps_d of q (wk_vertex_start's snap), and the vertex
+** (l, S.eout), which ends the stretch from the piece's start a, lies
+** beyond the vertex (S.ein, l), which starts the stretch to its end b,
+** by more than rounding.  The two stretches then overlap on l, and a
+** shielded end meets the other stretch's new vertex inside its own
+** stretch at once: the next group, at the same time, makes a second node
+** within eps_d of this one, joined to it by two arcs (a cycle).  The ends
+** are then left to the tolerance picture (they arrive at the node).  A
+** weighted comb 20-gon with vertices pulled to 5e10 (eps_d 50): a reflex
+** corner split a tooth edge's line at t = 8.0 nearly parallel to its own
+** edge (1e-3 rad), the snapped new vertex on that edge 0.22 behind the
+** cut, on the shielded tooth corner (exit 3, "closes a cycle";
+** tests/data/fuzz/invalid_naive_wcomb_*.wpoly). */
+static bool split_starts_reversed(const wk_wavefront *W, const wk_wf_vertex *S, uint32_t l, wk_point q,
+                                  double t) {
+    const wk_offset_line *L = &W->L[l];
+    wk_point p1, p2;
+    if (!wk_offset_lines_meet(L, &W->L[S->eout], t, &p1) || wf_dist2(p1, q) > W->eps_d * W->eps_d) p1 = q;
+    if (!wk_offset_lines_meet(&W->L[S->ein], L, t, &p2) || wf_dist2(p2, q) > W->eps_d * W->eps_d) p2 = q;
+    double ulp = DBL_EPSILON * (fabs(q.x) + fabs(q.y));
+    return (p1.x - p2.x) * L->ux + (p1.y - p2.y) * L->uy > WK_BEHIND_ULPS * ulp;
+}
+
 /* The seed's stretches: for each vertex x joined to the seed's new vertex
 ** at its node (velocity vnew) along line e, shield x if that stretch
 ** collapses later.  O(seeds * nodes), as plan_nodes: each seed's node is
@@ -732,11 +757,12 @@ static wk_status plan_slow_stretches(wk_wavefront *W, double t) {
             uint32_t a = S->ev_a, b = S->ev_b;
             if (!W->v[a].alive || W->v[a].next != b) continue;
             uint32_t l = W->v[a].eout;
+            bool ends = !split_starts_reversed(W, S, l, q, t);
             if (wk_vertex_velocity(&W->L[l], &W->L[S->eout], &vy) == WK_VEL_REGULAR &&
-                (st = shield_slow_stretch(W, k, q, a, a, l, vy, false, t)) == WK_OK)
+                (st = ends ? shield_slow_stretch(W, k, q, a, a, l, vy, false, t) : WK_OK) == WK_OK)
                 st = shield_slow_stretch(W, k, q, S->next, s, S->eout, vy, true, t);
             if (st == WK_OK && wk_vertex_velocity(&W->L[S->ein], &W->L[l], &vy) == WK_VEL_REGULAR &&
-                (st = shield_slow_stretch(W, k, q, b, a, l, vy, true, t)) == WK_OK)
+                (st = ends ? shield_slow_stretch(W, k, q, b, a, l, vy, true, t) : WK_OK) == WK_OK)
                 st = shield_slow_stretch(W, k, q, S->prev, S->prev, S->ein, vy, false, t);
         }
         /* a shielded echo takes no part: the node is the stretch's end, the
@@ -892,6 +918,38 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
     return WK_OK;
 }
 
+/* The piece leaving the last vertex c of a stretch (its next lies outside
+** the walk) is planned, but its far end is not: a node within eps_g of that
+** end on the piece's line makes plan_pinches take the end as arriving
+** there, and the outside vertex's own piece would not leave the node.
+** False when that can happen (local_walk_suffices then walks whole
+** cycles).  A weighted comb 20-gon with vertices pulled to 5e10 (eps_d 50,
+** teeth 110 apart): the edge event of a tooth's collapse at t = 10.26 lay
+** 48 from the next tooth's reflex corner, three steps beyond the walk
+** ("2 pieces arrive, 1 leave" up to eps_g 200; at 400 the node swallowed
+** edge 1's piece 209 away, and the arcs closed a cycle, exit 3;
+** tests/data/fuzz/invalid_naive_wcomb_*.wpoly). */
+static bool end_arrives_outside(wk_wavefront *W, const wk_wf_vertex *c, double t) {
+    const wk_wf_vertex *n = &W->v[c->next];
+    if (n->seen == W->stamp) return true;
+    wk_point a = c->at != WK_NONE ? W->cl[c->at].p : wk_wf_pos(c, t), b = wk_wf_pos(n, t);
+    const wk_offset_line *L = &W->L[c->eout];
+    double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
+    wk_point e = {a.x + len * L->ux, a.y + len * L->uy}, lo, hi;
+    band_box(e, L, 0, W->eps_g, &lo, &hi);
+    bool listed = near_nodes(W, lo, hi, W->eps_g);
+    uint32_t m = listed ? W->cg.n_out : W->n_cl;
+    for (uint32_t i = 0; i < m; i++) {
+        uint32_t k = listed ? W->cg.out[i] : i;
+        if (k == c->at) continue;
+        wk_point q = W->cl[k].p;
+        double s = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
+        double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
+        if (s >= len - W->eps_g && s <= len + W->eps_g && fabs(off) <= W->eps_g) return false;
+    }
+    return true;
+}
+
 /* A local walk (collect_local) is enough only if the group stays inside
 ** it: the pieces that enter the walk from outside (outside vertex -> first
 ** vertex of a stretch) are not part of the plan, so the first vertex of a
@@ -902,6 +960,7 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
 static bool local_walk_suffices(wk_wavefront *W, double t) {
     for (uint32_t i = 0; i < W->n_comp; i++) {
         const wk_wf_vertex *c = &W->v[W->comp[i]];
+        if (!end_arrives_outside(W, c, t)) return false;
         const wk_wf_vertex *o = &W->v[c->prev];
         if (o->seen == W->stamp) continue; /* not the first of a stretch */
         if (c->at != WK_NONE) return false;
