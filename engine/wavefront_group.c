@@ -156,7 +156,8 @@ static uint32_t find_cluster_within(wk_wavefront *W, wk_point p, double r) {
 ** other count as equal, and then the node reached first (smaller h) wins:
 ** the needle tip above has both nodes on its track and must stop at the
 ** first, the collapse of its own triangle (needle_tip_nearest_node.wpoly
-** still passes).  Nearest to p picked the wrong node for a
+** still passes); a node behind p (the vertex left it) comes after every
+** node ahead (see the weighted H below).  Nearest to p picked the wrong node for a
 ** spike vertex of speed 1.6e8 (a weighted comb with one vertex 2.5e9
 ** away): at t it was 220 units beside an edge event's node and 510 units
 ** before the node of its own collapse, which it reached at the end of the
@@ -175,6 +176,7 @@ static uint32_t find_cluster_on_track(wk_wavefront *W, wk_point p, wk_point vel,
         double a2 = wf_dist2(q, p);
         if (a2 > r2) continue;
         double h = v2 > 0 ? ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2 : 0;
+        bool behind = h < 0; /* the vertex left the node, moves away from it */
         h = fmin(fmax(h, 0), dt);
         wk_point c = {p.x + vel.x * h, p.y + vel.y * h};
         double d = sqrt(wf_dist2(q, c));
@@ -195,11 +197,27 @@ static uint32_t find_cluster_on_track(wk_wavefront *W, wk_point p, wk_point vel,
         ** behind a vertex of speed 1.25e8, and only that picture is
         ** valid there. */
         if (W->input_sides && d > 2 * e) continue;
-        bool better = d < best_d - e ||
-                      (d <= best_d + e && (h < best_h || (h == best_h && a2 <= best_a)));
+        /* Among nodes equally near the track (within eps_g), one the vertex
+        ** reaches (ahead of it, nearest along the track first) wins over one
+        ** it has left behind (nearest of those if there is no other); a node
+        ** behind, clamped to h = 0, counted as reached first.  A weighted
+        ** 12-gon H near (1e6, 1e6) with a vertex at 1e13 (eps_d 1e4, eps_t
+        ** 1.1: one group from t = 7e-7 to 0.4 takes the whole H) and edge 2
+        ** of weight 9.04: the tip of the sliver between edges 11 and 0 (speed
+        ** 2e8, 143 below its input vertex) went to the node of edges 8..10
+        ** 148 behind it across the crack, not to its own collapse at the H's
+        ** bottom node 1e6 ahead; the sliver became an arc between the top
+        ** and bottom nodes beside edge 10's piece, whose collapse at t = 0.1
+        ** closed a cycle at every rung of the tolerance ladder (exit 3 in 4
+        ** variants; tests/data/fuzz/invalid_naive_h_weight9_sliver_cycle.wpoly). */
+        double hk = behind ? -1 : h;
+        bool better = d < best_d - e;
+        if (!better && d <= best_d + e)
+            better = best_h < 0 ? hk >= 0 || a2 <= best_a
+                                : hk >= 0 && (hk < best_h || (hk == best_h && a2 <= best_a));
         if (better) {
             best_d = d;
-            best_h = h;
+            best_h = hk;
             best_a = a2;
             k_best = k;
         }
