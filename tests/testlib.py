@@ -163,6 +163,29 @@ def write_wpoly(path, pts, ws=None, comment=None):
     return path
 
 
+# ---------------------------------------------------------- sweeps
+
+def variant_outcome(wskel_bin, variant, path, naive_out, refused=None, timeout=60):
+    """One sweep case: run `wskel --variant VARIANT --check --stats PATH` and
+    classify it against naive's output naive_out (its JSON text): "timeout",
+    "unsupported" (exit 2 with the text refused in the message), "fail (exit
+    N)", "fallback" (the reference answered: not compared), "ok" or "mismatch"
+    (same_skeleton).  The far-vertex sweeps' shared step."""
+    rc, out, err = run([wskel_bin, "--variant", variant, "--check", "--stats", path],
+                       timeout=timeout)
+    if rc is None:
+        return "timeout"
+    if rc == 2 and refused and refused in err:
+        return "unsupported"
+    if rc != 0:
+        return "fail (exit %d)" % rc
+    got = json.loads(out)
+    if int((got.get("stats") or {}).get("reference_fallbacks", 0)):
+        return "fallback"
+    ok, _ = same_skeleton(json.loads(naive_out), got)
+    return "ok" if ok else "mismatch"
+
+
 # ---------------------------------------------------------- comparison
 
 def same_skeleton(a, b, tol=None, tol_t=None, weights=None):

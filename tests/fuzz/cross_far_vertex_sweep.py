@@ -120,21 +120,8 @@ def main():
             key = "naive exit %s" % rc
         else:
             total += 1
-            rc, out, err = tl.run([a.wskel, "--variant", "monotone", "--check", "--stats", path],
-                                  timeout=60)
-            if rc is None:
-                key = "timeout"
-            elif rc == 2 and "not monotone in any direction" in err:
-                key = "unsupported"
-            elif rc != 0:
-                key = "fail (exit %d)" % rc
-            else:
-                got = tl.json.loads(out)
-                if int((got.get("stats") or {}).get("reference_fallbacks", 0)):
-                    key = "fallback"
-                else:
-                    ok, why = tl.same_skeleton(tl.json.loads(out_n), got)
-                    key = "ok" if ok else "mismatch"
+            key = tl.variant_outcome(a.wskel, "monotone", path, out_n,
+                                     refused="not monotone in any direction")
             if key not in ("ok", "fallback", "unsupported"):
                 bad.append((name, key))
                 if a.keep:

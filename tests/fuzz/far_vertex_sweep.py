@@ -83,19 +83,7 @@ def main():
                             key = "naive exit %s" % rc
                         else:
                             total += 1
-                            rc, out, err = tl.run([a.wskel, "--variant", "motorcycle", "--check",
-                                                   "--stats", path], timeout=60)
-                            if rc is None:
-                                key = "timeout"
-                            elif rc != 0:
-                                key = "fail (exit %d)" % rc
-                            else:
-                                got = tl.json.loads(out)
-                                if int((got.get("stats") or {}).get("reference_fallbacks", 0)):
-                                    key = "fallback"
-                                else:
-                                    ok, why = tl.same_skeleton(tl.json.loads(out_n), got)
-                                    key = "ok" if ok else "mismatch"
+                            key = tl.variant_outcome(a.wskel, "motorcycle", path, out_n)
                             if key != "ok":
                                 bad.append((name, key))
                                 if a.keep:
