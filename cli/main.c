@@ -433,6 +433,7 @@ int main(int argc, char **argv) {
         fprintf(stderr, "time_s %.6f  peak_bytes %zu\n", time_s, peak);
         if (wk_variant_phase(V))
             fprintf(stderr, "phase_s %.6f  (%s)\n", R.phase_s, wk_variant_phase(V));
+        if (R.fallback_reason[0]) fprintf(stderr, "fallback_reason %s\n", R.fallback_reason);
         if (offset_s >= 0)
             fprintf(stderr, "offset_time_s %.6f  (%u offset times)\n", offset_s, n_offsets);
         for (uint32_t j = 0; j < wk_counter_count(V); j++)

@@ -12,6 +12,7 @@
 #include "variant.h"
 
 #include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -128,6 +129,7 @@ wk_status wk_solve(wk_run *R, const wk_variant *V, const wk_polygon *P, wk_skele
     wk_run_reset_peak(R);
     R->variant = V;
     R->phase_s = 0;
+    R->fallback_reason[0] = '\0';
     if (P->pslg && !(V->flags & WK_VARIANT_PSLG)) {
         const char *able = wk_variant_with_flags(WK_VARIANT_PSLG);
         wk_status st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
@@ -216,6 +218,12 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
 wk_status wk_solve_by_reference(wk_run *R, const wk_polygon *P, uint32_t counter,
                                 wk_skeleton **out) {
     *out = NULL;
+    if (R->err.code != WK_OK && !R->fallback_reason[0]) {
+        const char *src = R->err.src_file ? strrchr(R->err.src_file, '/') : NULL;
+        snprintf(R->fallback_reason, sizeof R->fallback_reason, "%s:%d: %s",
+                 src ? src + 1 : R->err.src_file ? R->err.src_file : "?", R->err.src_line,
+                 R->err.msg);
+    }
     wk_run_clear_error(R);
     wk_event ev = {0, 0, 0, WK_NONE, WK_NONE, WK_NONE};
     wk_notify_event(R, counter, &ev);

@@ -259,6 +259,13 @@ typedef struct wk_run {
                                 attempts' sum for wk_solve_checked); 0 when
                                 it has none.  A time, so not a counter:
                                 counters are deterministic */
+    char fallback_reason[640]; /* why the variant's own run gave up in the
+                                  last wk_solve and the reference answered
+                                  (its failure message, prefixed by where it
+                                  was raised); "" when it did not.  Kept
+                                  because the failure itself is cleared: the
+                                  run succeeds, and a user who sees
+                                  reference_fallbacks must learn why */
 } wk_run;
 
 /* Monotonic wall clock in seconds (for phase timing). */
