@@ -296,6 +296,15 @@ if "$PY" -c 'import json,sys; json.load(open(sys.argv[1]))' "$OUT" 2>/dev/null; 
 else
   fail "--stats: stdout is still valid JSON" "$(head -c 200 "$OUT")"
 fi
+if [[ "$ERR" == *fallback_reason* ]]; then fail "--stats: no fallback_reason when the variant answered" "${ERR:0:400}"
+else pass "--stats: no fallback_reason when the variant answered"; fi
+# monotone hands this input to the reference by design (monotone only with
+# edges perpendicular to the sweep, unequal weights): --stats must say why
+run "$WSKEL" --variant monotone --stats tests/data/degenerate/arr_collinear_relink_stale_piece.wpoly
+expect "--stats prints fallback_reason when the reference answered" 0 "fallback_reason monotone.c:"
+expect "fallback_reason names the cause" 0 "perpendicular to the sweep"
+if [[ "$ERR" == *"reference_fallbacks"* ]]; then pass "--stats: reference_fallbacks beside fallback_reason"
+else fail "--stats: reference_fallbacks beside fallback_reason" "${ERR:0:400}"; fi
 run "$WSKEL" --check "$SQUARE"
 expect "--check on a good input exits 0" 0
 if [ -z "$ERR" ]; then pass "--check alone is silent on stderr"
