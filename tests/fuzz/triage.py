@@ -82,7 +82,7 @@ def polygon_lines(path):
     data = open(path, "rb").read()
     s = data.lstrip(b"\xef\xbb\xbf \t\r\n")
     if s.startswith(b"<"):
-        return graphml_to_wpoly(data)
+        return graphml_to_wpoly(data)  # None: not one cycle (see there)
     if data.startswith(b"\xef\xbb\xbf"):
         data = data[3:]
     keep = [l for l in data.replace(b"\r\n", b"\n").split(b"\n")
@@ -117,6 +117,10 @@ def graphml_to_wpoly(data):
     for i, e in enumerate(edges):
         inc[e.get("source")].append(i)
         inc[e.get("target")].append(i)
+    # Only a single cycle is a polygon a .wpoly can hold; a PSLG (terminals,
+    # vertices of degree 3 or more, several components) stays GraphML.
+    if not nodes or len(edges) != len(nodes) or any(len(v) != 2 for v in inc.values()):
+        return None
     out, cur, e = [], nodes[0].get("id"), inc[nodes[0].get("id")][0]
     while True:
         w = value(edges[e], "edge-weight")
@@ -124,6 +128,8 @@ def graphml_to_wpoly(data):
         nxt = edges[e].get("target") if edges[e].get("source") == cur else edges[e].get("source")
         if nxt == nodes[0].get("id"):
             break
+        if len(out) > len(edges):
+            return None
         e = inc[nxt][1] if inc[nxt][0] == e else inc[nxt][0]
         cur = nxt
     lines = ["%d" % len(out)] + ["%r %r %r" % (p[0], p[1], w) for p, w in out]
@@ -178,13 +184,21 @@ def main():
         if args.out:
             os.makedirs(args.out, exist_ok=True)
             base = os.path.splitext(os.path.basename(f))[0]
-            dst = os.path.join(args.out, base + ".wpoly")
             detail = "; ".join("%s: %s" % (v, d.split(" | ")[0][:160]) for v, k, d in res
                                if k not in ("ok", "unsupported"))
-            with open(dst, "wb") as o:
-                o.write(("# fuzz_variants finding (%s): %s\n" % (line, detail))
-                        .replace("\n", " ").rstrip().encode() + b"\n")
-                o.write(polygon_lines(f))
+            comment = ("fuzz_variants finding (%s): %s" % (line, detail)).replace("\n", " ").rstrip()
+            text = polygon_lines(f)
+            if text is None:
+                # a PSLG: kept as GraphML, the comment after the XML declaration
+                data = open(f, "rb").read()
+                decl = data.find(b"?>") + 2 if data.lstrip().startswith(b"<?xml") else 0
+                with open(os.path.join(args.out, base + ".graphml"), "wb") as o:
+                    o.write(data[:decl] + b"\n<!-- " + comment.replace("--", "- -").encode()
+                            + b" -->" + data[decl:])
+                continue
+            with open(os.path.join(args.out, base + ".wpoly"), "wb") as o:
+                o.write(("# " + comment).encode() + b"\n")
+                o.write(text)
     return 0
 
 
