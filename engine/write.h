@@ -48,9 +48,6 @@ static inline wk_status wk_write_begin(wk_run *R, const wk_polygon *P, const wk_
 typedef struct wk_capped_faces {
     uint32_t *node, *end;
     uint32_t n_node, cap_node, n_faces, cap_end, n_edge_faces;
-    /* a PSLG: its clockwise cap cycles (not faces: the rim around the
-    ** unbounded face), each followed by WK_NONE; see write_obj_capped.c */
-    uint32_t *holes, n_holes, cap_holes;
 } wk_capped_faces;
 wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                                 const uint32_t *edge_of, wk_capped_faces *CF, const char *what);

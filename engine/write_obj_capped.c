@@ -10,8 +10,8 @@
 ** path handles faces whose every node has two of the face's arcs (no
 ** islands, no node visited twice) and says so otherwise (WK_EUNSUPPORTED).
 ** A PSLG's skeleton is cut at its horizon T the same way (its cap is the
-** wavefront at T); there a clockwise cap cycle is no face (see
-** pslg_cap_face), and the edges' faces come from wk_faces_build, which
+** wavefront at T); there a clockwise cap cycle inside no face is the rim,
+** no face (cap_bridge_holes), and the edges' faces come from wk_faces_build, which
 ** bridges a face's islands in (faces.h) as the uncapped roof does.
 */
 #include "write.h"
@@ -38,25 +38,6 @@ static uint32_t step(const wk_skeleton *S, const uint32_t *arcs, uint32_t k, uin
     return c->a == cur ? c->b : c->a;
 }
 
-/* A PSLG's cap (the wavefront at its horizon T) bounds the unswept region:
-** a counter-clockwise cycle is the wavefront of a bounded face still alive
-** at T, closed by its cap face at z = T; a clockwise one runs around a
-** component with the unswept region outside it: the unbounded outer face,
-** which no face can close (it is the rim of the roof), or a hole in another
-** cycle's cap face.  So the last cycle is dropped when clockwise, its
-** nodes kept aside (after the faces' nodes) for pslg_cap_holes. */
-static wk_status pslg_cap_face(wk_run *R, const wk_skeleton *S, wk_capped_faces *CF) {
-    uint32_t f = CF->n_faces - 1, from = f ? CF->end[f - 1] : 0, len = CF->end[f] - from;
-    if (wk_cycle_area(S, CF->node + from, len) > 0) return WK_OK;
-    CF->n_faces--;
-    if (WK_GROW(R, CF->holes, CF->cap_holes, CF->n_holes + len + 1) != WK_OK) return R->err.code;
-    memcpy(CF->holes + CF->n_holes, CF->node + from, (size_t)len * sizeof *CF->node);
-    CF->n_holes += len;
-    CF->holes[CF->n_holes++] = WK_NONE; /* cycle separator */
-    CF->n_node = from;
-    return WK_OK;
-}
-
 /* Is (x, y) inside the node cycle c[0 .. len) (even-odd, doubles: cap
 ** cycles are disjoint wavefront components, so any vertex decides)? */
 static bool inside_cycle(const wk_skeleton *S, const uint32_t *c, uint32_t len, double x, double y) {
@@ -67,28 +48,6 @@ static bool inside_cycle(const wk_skeleton *S, const uint32_t *c, uint32_t len, 
             in = !in;
     }
     return in;
-}
-
-/* A clockwise cap cycle inside a cap face is a hole of that face (a
-** component inside a bounded face whose wavefront is alive at T): one OBJ
-** polygon cannot hold it, so the roof is refused rather than written with
-** the face covering the component. */
-static wk_status pslg_cap_holes(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
-                                wk_capped_faces *CF, const char *what) {
-    for (uint32_t h = 0; h < CF->n_holes; h++) {
-        const wk_node *v = &S->nodes[CF->holes[h]];
-        for (uint32_t f = CF->n_edge_faces; f < CF->n_faces; f++) {
-            uint32_t from = f ? CF->end[f - 1] : 0;
-            if (inside_cycle(S, CF->node + from, CF->end[f] - from, v->x, v->y))
-                return WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
-                               "%sthe wavefront at the horizon t = %g encloses a component "
-                               "still apart from it (the cap face would have a hole, not written "
-                               "yet): use a larger --until",
-                               what, S->horizon);
-        }
-        while (CF->holes[h] != WK_NONE) h++;
-    }
-    return WK_OK;
 }
 
 /* Does cycle h lie inside cycle c?  The cap's cycles are disjoint
@@ -111,14 +70,29 @@ static bool cycle_inside(const wk_skeleton *S, const uint32_t *h, uint32_t hl, c
 ** cycle is bridged into the innermost counter-clockwise cycle around it
 ** (wk_bridge_loop, as faces.c bridges a face's islands in): one weakly
 ** simple face per outer cycle, holes by decreasing max x (faces.c says
-** why).  Cycles of zero area stay faces as before. */
+** why).  Cycles of zero area stay faces as before.
+** A PSLG's cap (the wavefront at its horizon T) bounds the unswept region
+** the same way: a counter-clockwise cycle is the wavefront of a bounded
+** face still alive at T, closed by its cap face; a clockwise one runs
+** around a component with the unswept region outside it.  Inside no
+** counter-clockwise cycle it is the rim of the unbounded outer face, which
+** no face closes: it is dropped (pslg).  Inside one it is a hole of that
+** face (a 10x10 square with a segment of length 2 in its middle at
+** --until 0.5, issues 13/14: the face was refused, and written whole it
+** would be a lid over the segment's swept stadium), bridged in as for
+** polygons; the innermost cycle around it is its parent when components
+** nest (a segment inside a square inside a square).  A PSLG cycle of zero
+** area (a bounded face collapsing exactly at T) closes nothing and is
+** dropped: bridged in, it would cross the rim around it. */
 static wk_status cap_bridge_holes(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                                   wk_capped_faces *CF, const char *what) {
     uint32_t f0 = CF->n_edge_faces, m = CF->n_faces - f0, base = f0 ? CF->end[f0 - 1] : 0;
     uint32_t n_cw = 0;
+    bool pslg = P->pslg;
     for (uint32_t f = f0; f < CF->n_faces; f++) {
         uint32_t from = f ? CF->end[f - 1] : 0;
-        n_cw += wk_cycle_area(S, CF->node + from, CF->end[f] - from) < 0;
+        double a = wk_cycle_area(S, CF->node + from, CF->end[f] - from);
+        n_cw += a < 0 || (pslg && a == 0);
     }
     if (n_cw == 0) return WK_OK;
     uint32_t room = CF->n_node - base + 2 * m;
@@ -138,7 +112,7 @@ static wk_status cap_bridge_holes(wk_run *R, const wk_polygon *P, const wk_skele
             if (area[o] > 0 && (owner[h] == WK_NONE || area[o] < area[owner[h]]) &&
                 cycle_inside(S, CYC(h), LEN(h), CYC(o), LEN(o)))
                 owner[h] = o;
-        if (owner[h] == WK_NONE) {
+        if (owner[h] == WK_NONE && !pslg) {
             st = WK_FAIL(R, WK_EUNSUPPORTED, P->name, 0,
                          "%sthe cap at the height t = %g has a clockwise cycle (through node "
                          "%u) inside no counter-clockwise one: no cap face to cut it from",
@@ -148,7 +122,7 @@ static wk_status cap_bridge_holes(wk_run *R, const wk_polygon *P, const wk_skele
     }
     uint32_t pos = 0, k = 0;
     for (uint32_t o = 0; o < m; o++) {
-        if (area[o] < 0) continue;
+        if (area[o] < 0 || (pslg && area[o] == 0)) continue; /* a hole, a rim or nothing */
         uint32_t len = LEN(o);
         memcpy(out + pos, CYC(o), (size_t)len * sizeof *out);
         memset(flag + pos, 0, len);
@@ -275,11 +249,9 @@ wk_status wk_capped_faces_build(wk_run *R, const wk_polygon *P, const wk_skeleto
                 j = nj;
             }
             END_FACE();
-            if (P->pslg && (st = pslg_cap_face(R, S, CF)) != WK_OK) goto out;
         }
     }
-    if (P->pslg && (st = pslg_cap_holes(R, P, S, CF, what)) != WK_OK) goto out;
-    if (!P->pslg && (st = cap_bridge_holes(R, P, S, CF, what)) != WK_OK) goto out;
+    if ((st = cap_bridge_holes(R, P, S, CF, what)) != WK_OK) goto out;
 #undef PUSH_NODE
 #undef END_FACE
     st = WK_OK;
@@ -294,7 +266,6 @@ out:
 void wk_capped_faces_clear(wk_run *R, wk_capped_faces *CF) {
     WK_FREE_ARRAY(R, CF->node, CF->cap_node);
     WK_FREE_ARRAY(R, CF->end, CF->cap_end);
-    WK_FREE_ARRAY(R, CF->holes, CF->cap_holes);
     memset(CF, 0, sizeof *CF);
 }
 

@@ -15,8 +15,8 @@
 #   (h) bin/wskel-gen: every family at n = 50 passes --check; exit codes 1, 64
 #   (i) PSLG GraphML (tests/data/pslg): --check, --until, the segment's cap,
 #       other variants refuse (exit 2), --pslg; svg, obj, vtp and --offset
-#       (past the default horizon; past --until: refused), the refused roof
-#       (a cap face with a hole)
+#       (past the default horizon; past --until: refused), a roof whose cap
+#       face has holes (components inside it, nested two deep)
 #   (j) --validate SKEL.json POLY: the skeletons of tests/data/skeletons
 #       (README there) as listed in its EXPECTED, and mutants of CGAL's
 #       skeleton, each breaking one property, rejected naming it
@@ -493,9 +493,15 @@ expect "pslg: --offset past --until refused (exit 2)" 2 "beyond the horizon --un
 [ ! -e "$TMP/late.wkt" ] && pass "pslg: refused --offset leaves no file" || fail "pslg: refused --offset leaves no file" ""
 run "$WSKEL" --format svg --until 1 --offset 3 "$PSLG/segment.graphml"
 expect "pslg: svg --offset past --until refused (exit 2)" 2 "beyond the horizon --until 1"
-# a segment inside a square, cut at t = 1 before the square's inner
-# wavefront meets the segment's: the cap face inside the square would have
-# a hole (the segment's wavefront), which an OBJ polygon cannot hold
+# a segment of length 2 inside a 10x10 square, cut before the square's
+# inner wavefront meets the segment's (issues 13/14): the cap face inside
+# the square has a hole (the segment's wavefront), bridged in; this was
+# refused ("encloses a component").  tests/cap_faces.py checks the cap
+# faces' signed area against the area the skeleton's own cap bounds and
+# against the geometry: at t = 0.5 the square shrunk to 9x9 minus the
+# segment's wavefront, a 3x1 rectangle (the terminals' caps square off the
+# stadium of area 2 + pi/4: 81 - 3 = 78); at t = 1, 64 - 4x2 = 56; no cap
+# face covers a point of the segment, one does a point between them
 cat >"$TMP/ring_segment.graphml" <<'XML'
 <?xml version="1.0" encoding="UTF-8"?>
 <graphml xmlns="http://graphml.graphdrawing.org/xmlns">
@@ -513,10 +519,28 @@ cat >"$TMP/ring_segment.graphml" <<'XML'
 </graph>
 </graphml>
 XML
-for fmt in obj vtp; do
-  run "$WSKEL" --until 1 --format "$fmt" -o "$TMP/holed.$fmt" "$TMP/ring_segment.graphml"
-  expect "pslg: $fmt of a cap face with a hole refused (exit 2)" 2 "encloses a component"
-  [ ! -e "$TMP/holed.$fmt" ] && pass "pslg: refused $fmt leaves no file" || fail "pslg: refused $fmt leaves no file" ""
+# the same segment inside a second square 2..8 inside the first (nesting
+# depth 2: the segment's wavefront is a hole of the inner square's cap face,
+# the inner square's outer wavefront one of the outer square's): at t = 0.5
+# 9x9 - 7x7 + 5x5 - 3x1 = 54
+sed -e 's#<node id="p">#<node id="e"><data key="x">2</data><data key="y">2</data></node><node id="f"><data key="x">8</data><data key="y">2</data></node><node id="g"><data key="x">8</data><data key="y">8</data></node><node id="h"><data key="x">2</data><data key="y">8</data></node><node id="p">#' \
+  -e 's#<edge source="p"#<edge source="e" target="f"/><edge source="f" target="g"/><edge source="g" target="h"/><edge source="h" target="e"/><edge source="p"#' \
+  "$TMP/ring_segment.graphml" >"$TMP/nested_segment.graphml"
+for v in naive motorcycle; do
+  for c in "ring_segment 0.5 78 --in 1,5" "ring_segment 1 56 --in 2,5" "nested_segment 0.5 54 --in 1,5 --out 2,5 --in 3,5 --out 1.6,5"; do
+    set -- $c
+    g=$1 u=$2 area=$3; shift 3
+    run "$WSKEL" --variant "$v" --until "$u" --format json -o "$TMP/holed.json" "$TMP/$g.graphml"
+    expect "pslg: $v json of $g at --until $u exits 0" 0
+    for fmt in obj vtp; do
+      run "$WSKEL" --variant "$v" --until "$u" --format "$fmt" -o "$TMP/holed.$fmt" "$TMP/$g.graphml"
+      expect "pslg: $v $fmt of $g at --until $u (a cap face with a hole) exits 0" 0
+      if chk=$("$PY" tests/cap_faces.py "$TMP/holed.$fmt" "$TMP/holed.json" --area "$area" \
+          --out 4,5 --out 5,5 --out 6,5 --out 4.01,5 --out 5.99,5 "$@" 2>&1); then
+        pass "pslg: $v $fmt of $g at --until $u: cap faces of area $area, the segment left open"
+      else fail "pslg: $v $fmt of $g at --until $u: cap faces of area $area, the segment left open" "$chk"; fi
+    done
+  done
 done
 run "$WSKEL" --until 3 --format obj "$TMP/ring_segment.graphml"
 expect "pslg: the same after the components met exits 0" 0

@@ -654,13 +654,42 @@ static bool on_wavefront(const wk_polygon *P, double x, double y, double t, doub
     return false;
 }
 
+/* Is (x, y) inside ring r of O (even-odd)? */
+static bool in_offset_ring(const wk_offset_set *O, uint32_t r, double x, double y) {
+    bool in = false;
+    for (uint32_t i = O->ring_start[r], j = O->ring_start[r + 1] - 1; i < O->ring_start[r + 1]; j = i++) {
+        wk_point a = O->p[j], b = O->p[i];
+        if ((a.y > y) != (b.y > y) && x < a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
+    }
+    return in;
+}
+
+/* The unswept bounded region at T (what the cap faces close): the holes of
+** the swept region minus the components inside them, each with its outer
+** ring (its own holes count among the holes), at any nesting depth. */
+static double unswept_area(const wk_offset_set *O) {
+    double area = 0;
+    for (uint32_t c = 0; c < O->n_polygons; c++) {
+        uint32_t r0 = O->polygon_start[c];
+        for (uint32_t r = r0 + 1; r < O->polygon_start[c + 1]; r++) area -= wk_offset_ring_area(O, r);
+        wk_point q = O->p[O->ring_start[r0]];
+        bool nested = false;
+        for (uint32_t d = 0; d < O->n_polygons && !nested; d++)
+            for (uint32_t r = O->polygon_start[d] + 1; r < O->polygon_start[d + 1] && !nested; r++)
+                nested = d != c && in_offset_ring(O, r, q.x, q.y);
+        if (nested) area -= wk_offset_ring_area(O, r0);
+    }
+    return area;
+}
+
 /* The offsets at a quarter, a half, three quarters and all of the horizon:
 ** each a set of polygons around the swept region (outer ring
 ** counter-clockwise, holes clockwise), every vertex on the wavefront at t,
 ** the swept area growing with t; none at t = 0; a time past the horizon
-** refused.  Returns the swept area at T. */
+** refused.  Returns the swept area at T, and in *unswept the area its
+** holes leave open (unswept_area). */
 static double check_pslg_offsets(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
-                                 const char *what) {
+                                 const char *what, double *unswept) {
     double T = S->horizon, tol = 1e-7 * wk_polygon_scale(P), last = 0;
     for (int k = 0; k <= 4; k++) {
         double t = T * k / 4;
@@ -685,6 +714,7 @@ static double check_pslg_offsets(wk_run *R, const wk_polygon *P, const wk_skelet
         cr_assert_geq(area, last - tol * tol, "%s: the swept area shrinks at t = %g", what, t);
         if (k > 0) cr_assert_gt(area, last, "%s: nothing swept between offsets at t = %g", what, t);
         last = area;
+        if (k == 4) *unswept = unswept_area(O);
         wk_offset_set_free(R, O);
     }
     wk_offset_set *O = NULL;
@@ -696,25 +726,25 @@ static double check_pslg_offsets(wk_run *R, const wk_polygon *P, const wk_skelet
 /* The OBJ roof: one face per stored edge, each vertex on that edge's roof
 ** plane (z = d / w), then the cap's faces at z = T; the edge faces'
 ** projections add up to the swept area at T (a face's islands are bridged
-** in, their loops clockwise).  A cap face with a hole is refused
-** (WK_EUNSUPPORTED); returns false then. */
+** in, their loops clockwise), the cap faces' to the unswept area its holes
+** leave (a component inside a cap face bridged in as its hole: issues
+** 13/14, refused before).  Returns whether a cap face has a hole (a
+** bridge visits its ends twice). */
 static bool check_pslg_obj(wk_run *R, const wk_polygon *P, const wk_skeleton *S, double swept,
-                           const char *what) {
+                           double unswept, const char *what) {
     FILE *f = tmpfile();
     cr_assert_not_null(f);
     wk_status st = wk_write_obj(R, f, P, S);
-    if (st == WK_EUNSUPPORTED) {
-        fclose(f);
-        R->err.code = WK_OK;
-        return false;
-    }
     char msg[1024];
     err_text(R, msg, sizeof msg);
     cr_assert_eq(st, WK_OK, "%s: obj: %s", what, msg);
     rewind(f);
     static wk_node v[4096];
     uint32_t nv = 0, face = 0;
-    double tol = 1e-7 * wk_polygon_scale(P), area = 0;
+    static uint32_t seen[4096]; /* seen[v] == face + 1: v already on this face */
+    memset(seen, 0, sizeof seen);
+    bool holed = false;
+    double tol = 1e-7 * wk_polygon_scale(P), area = 0, cap = 0;
     static char line[1 << 16];
     while (fgets(line, sizeof line, f)) {
         if (line[0] == 'v') {
@@ -733,6 +763,8 @@ static bool check_pslg_obj(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
                               "%s: face %u vertex %lu off its plane", what, face, k);
                 else
                     cr_assert_eq(q->t, S->horizon, "%s: cap face %u", what, face);
+                if (face >= P->n && seen[k - 1] == face + 1) holed = true;
+                seen[k - 1] = face + 1;
                 if (prev != WK_NONE) a += v[prev].x * q->y - q->x * v[prev].y;
                 else first = (uint32_t)k - 1;
                 prev = (uint32_t)k - 1;
@@ -740,6 +772,7 @@ static bool check_pslg_obj(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
             a += v[prev].x * v[first].y - v[first].x * v[prev].y;
             cr_assert_geq(a, -tol * tol, "%s: face %u is clockwise", what, face);
             if (face < P->n) area += a / 2;
+            else cap += a / 2;
             face++;
         }
     }
@@ -747,7 +780,9 @@ static bool check_pslg_obj(wk_run *R, const wk_polygon *P, const wk_skeleton *S,
     cr_assert_geq(face, P->n, "%s: %u faces", what, face);
     cr_assert(fabs(area - swept) <= 1e-9 * swept + tol * tol, "%s: roof area %.17g, swept %.17g",
               what, area, swept);
-    return true;
+    cr_assert(fabs(cap - unswept) <= 1e-9 * swept + tol * tol,
+              "%s: cap faces' area %.17g, unswept %.17g", what, cap, unswept);
+    return holed;
 }
 
 Test(pslg, ring_offsets_closed_form) {
@@ -771,10 +806,36 @@ Test(pslg, ring_offsets_closed_form) {
         cr_assert_float_eq(wk_offset_ring_area(O, 1), -(10 - 2.0 * k) * (10 - 2.0 * k), 1e-9);
         wk_offset_set_free(&R, O);
     }
-    double swept = check_pslg_offsets(&R, P, S, "square ring");
+    double unswept, swept = check_pslg_offsets(&R, P, S, "square ring", &unswept);
     cr_assert_float_eq(swept, 16.0 * 16.0 - 4.0 * 4.0, 1e-9);
-    cr_assert(check_pslg_obj(&R, P, S, swept, "square ring"));
+    cr_assert_float_eq(unswept, 4.0 * 4.0, 1e-9);
+    cr_assert(!check_pslg_obj(&R, P, S, swept, unswept, "square ring"));
     release(&R, P, S);
+}
+
+Test(pslg, cap_faces_with_holes_closed_form) {
+    /* a segment of length 2 in the middle of a 10 x 10 square ring cut at
+    ** T = 0.5, before the square's inner wavefront meets the segment's
+    ** (issues 13/14, refused before: "encloses a component"): the cap is
+    ** the square shrunk to 9 x 9 minus the segment's wavefront, a 3 x 1
+    ** rectangle (the terminals' caps square off the stadium), 81 - 3 = 78,
+    ** written as one face with the hole bridged in.  Inside a second ring
+    ** [2, 8]^2 (nesting depth 2: the segment's wavefront a hole of the
+    ** inner ring's cap face, the inner ring's outer wavefront one of the
+    ** outer ring's): 9 x 9 - 7 x 7 + 5 x 5 - 3 x 1 = 54, two faces */
+    double x[10] = {0, 10, 10, 0, 4, 6, 2, 8, 8, 2}, y[10] = {0, 0, 10, 10, 5, 5, 2, 2, 8, 8};
+    uint32_t s[9] = {0, 1, 2, 3, 4, 6, 7, 8, 9}, d[9] = {1, 2, 3, 0, 5, 7, 8, 9, 6};
+    for (int nested = 0; nested < 2; nested++) {
+        wk_run R;
+        wk_run_init(&R);
+        wk_polygon *P;
+        wk_skeleton *S;
+        expect_ok(&R, solve_pslg(&R, nested ? 10 : 6, x, y, nested ? 9 : 5, s, d, NULL, 0.5, &P, &S));
+        double unswept, swept = check_pslg_offsets(&R, P, S, "ring and segment", &unswept);
+        cr_assert_float_eq(unswept, nested ? 54.0 : 78.0, 1e-9, "nested %d: %.17g", nested, unswept);
+        cr_assert(check_pslg_obj(&R, P, S, swept, unswept, "ring and segment"), "nested %d", nested);
+        release(&R, P, S);
+    }
 }
 
 /* What writer w writes for the ring with a spoke cut at T = 3, with the
@@ -835,7 +896,7 @@ Test(pslg, writers_out_of_memory_at_every_allocation) {
 }
 
 Test(pslg, generated_graphs_pass_the_validator) {
-    uint32_t cases = 0, events = 0, roofs = 0;
+    uint32_t cases = 0, events = 0, holed = 0;
     static graph_buf G;
     /* WSKEL_PSLG_CASES=N: a longer sweep by hand */
     uint64_t n_seeds = quick() ? 30 : 90;
@@ -870,14 +931,15 @@ Test(pslg, generated_graphs_pass_the_validator) {
             char what[96];
             snprintf(what, sizeof what, "seed %llu family %d weighted %d until %g",
                      (unsigned long long)seed0, family, weighted, untils[u]);
-            roofs += check_pslg_obj(&R, P, S, check_pslg_offsets(&R, P, S, what), what);
+            double unswept, swept = check_pslg_offsets(&R, P, S, what, &unswept);
+            holed += check_pslg_obj(&R, P, S, swept, unswept, what);
             release(&R, P, S);
         }
     }
-    cr_log_info("pslg sweep: %u cases validated, %u events, %u roofs (the others have a cap "
-                "face with a hole)",
-                cases, events, roofs);
-    cr_assert_gt(roofs, cases / 2, "only %u of %u roofs written", roofs, cases);
+    /* the generated graphs give no cap face with a hole (their horizons are
+    ** late): cap_faces_with_holes_closed_form has them */
+    cr_log_info("pslg sweep: %u cases validated, %u events, %u roofs with a cap face with a hole",
+                cases, events, holed);
     cr_assert_gt(cases, 40, "only %u cases ran", cases);
     cr_assert_gt(events, 100, "the generated graphs had only %u events", events);
 }

@@ -566,9 +566,9 @@ cycle, the island bridged in)."""
 def pslg_roof(points, edges, weights=None, until=None, variant="naive", check=True,
               name="<python>"):
     """The roof of a PSLG's skeleton up to its horizon (see PslgRoof).  A
-    horizon at which a bounded face's wavefront still encloses another
-    component raises UnsupportedError (the cap face would have a hole):
-    a larger until helps."""
+    bounded face's wavefront that still encloses another component at the
+    horizon gives a cap face with that component's wavefront bridged in as
+    a hole (one weakly simple cycle, as the CLI's OBJ)."""
     with _Run() as h:
         _solve_pslg(h, points, edges, weights, _until_arg(until), variant, check, name)
         if _c_roof(h) != 0:
