@@ -2343,12 +2343,15 @@ wk_status wf_resolve_group(wk_wavefront *W, double t) {
     ** wide spot, node_radius_at), up to WK_GROUP_WIDEN_MAX eps_d: a coarser
     ** picture of that event, still far inside the validator's tolerance,
     ** while every other node of the group keeps eps_d.  Widening the whole
-    ** group made every node of it coarse, and nodes far from the failing
-    ** event took in vertices that were not part of theirs: weighted combs
-    ** with vertices pulled to 5e10 (eps_d 50, teeth 110 apart), where a
-    ** group failed at 50 and 100 and at 200 swallowed vertices 115 and 146
-    ** from their events, or a node took in a vertex 21 away and made it
-    ** again (exit 3, "closes a cycle"; tests/data/fuzz/invalid_naive_wcomb_*).
+    ** group made every node of it coarse, so that a node far from the
+    ** failing event could take in vertices that were not part of its own.
+    ** Measured: a weighted comb with a vertex at 5e10 (eps_d 50) failed at
+    ** t = 5.79 until its nodes were 400 wide; before is_sliver's spike rule
+    ** (which now plans it at eps_d) the whole group at 400 ended faces 5, 6,
+    ** 7 at t = 5.79 and the widened pair alone at t = 20.5, the exact node
+    ** being at t = 28.3 (tests/data/fuzz/mismatch_arrangement_wcomb_32dfdbca.wpoly).
+    ** The failing node itself still takes in what lies within its new
+    ** radius (there vertices 157 and 180 away at 200).
     ** The whole group is still widened, as before (the spots dropped), as
     ** the last resort: when the failure names no node ("too many spikes"),
     ** when the named nodes are already WK_GROUP_WIDEN_MAX eps_d wide, or after
