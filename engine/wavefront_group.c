@@ -180,8 +180,27 @@ static uint32_t find_cluster_within(wk_wavefront *W, wk_point p, double travel) 
 ** before the node of its own collapse, which it reached at the end of the
 ** span (3.2e-6 later); sent to the edge event, the skeleton closed a cycle
 ** (exit 3; the six comb_spike files of tests/data/fuzz). */
-static uint32_t find_cluster_on_track(wk_wavefront *W, wk_point p, wk_point vel, double dt,
+/* True if node q lies behind one of vertex u's own offset lines at t by
+** more than the rounding of its place (WK_BEHIND_ULPS ulps of its
+** coordinates): u's track runs along the front of both lines, so such a
+** node lies across the outside of u's corner, not on the way of u, however
+** near the track passes it.  find_cluster_on_track skips it (nominal and
+** finer tolerances only, as its 2 eps_g rule).  A 12-gon H near (1e6, 1e6)
+** with a vertex pulled to x = 5e11 (eps_d 500): at t = 0 the tip of the
+** left bar's sliver (speed 2e6, up the bar to the bar's top node at
+** t = 0.5) passed 3 units beside the node of the right bar's foot, across
+** the gap between the bars and behind its own edge 1; taken there (reached
+** first), it joined the two feet across the outside and the arcs closed a
+** cycle (exit 3 in four variants with --check, CGAL valid;
+** tests/data/fuzz/invalid_naive_h_far_tip_across_gap.wpoly). */
+static bool behind_own_line(const wk_wavefront *W, const wk_wf_vertex *u, wk_point q, double t) {
+    double bar = WK_BEHIND_ULPS * DBL_EPSILON * (fabs(q.x) + fabs(q.y));
+    return wk_offset_distance(&W->L[u->ein], q, t) < -bar || wk_offset_distance(&W->L[u->eout], q, t) < -bar;
+}
+
+static uint32_t find_cluster_on_track(wk_wavefront *W, const wk_wf_vertex *u, double t, double dt,
                                       double travel) {
+    wk_point p = wk_wf_pos(u, t), vel = u->vel;
     double best_d = INFINITY, best_h = INFINITY, best_a = INFINITY;
     double v2 = vel.x * vel.x + vel.y * vel.y;
     uint32_t k_best = WK_NONE;
@@ -214,6 +233,7 @@ static uint32_t find_cluster_on_track(wk_wavefront *W, wk_point p, wk_point vel,
         ** behind a vertex of speed 1.25e8, and only that picture is
         ** valid there. */
         if (W->input_sides && d > 2 * e) continue;
+        if (W->input_sides && behind_own_line(W, u, q, t)) continue;
         /* Among nodes equally near the track (within eps_g), one the vertex
         ** reaches (ahead of it, nearest along the track first) wins over one
         ** it has left behind (nearest of those if there is no other); a node
@@ -918,7 +938,7 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
         ** eps_t: a reflex vertex of speed 4e5 then arrived at a node 2.4
         ** units away, in a group of one event (the same H with needles) */
         double speed = fabs(u->vel.x) + fabs(u->vel.y), dt = track_span(W, W->comp[i], t);
-        u->at = speed * dt > W->eps_g ? find_cluster_on_track(W, wk_wf_pos(u, t), u->vel, dt, speed * dt)
+        u->at = speed * dt > W->eps_g ? find_cluster_on_track(W, u, t, dt, speed * dt)
                                       : find_cluster_within(W, wk_wf_pos(u, t), speed * dt);
         if (u->at == WK_NONE && u->forced)
             u->at = forced_track_node(W, W->comp[i], t);
