@@ -119,6 +119,13 @@
 ** planned again with the radius doubled, up to this many eps_d (256 eps_d
 ** is still 4 times below the validator's default tolerance). */
 #define WK_GROUP_WIDEN_MAX 256.0
+/* A group whose plan fails at a node widens that node alone (a wide spot,
+** wf_resolve_group) at most this many times before the whole group is
+** widened as the last resort: each try is a whole plan of the group, and a
+** failure that names another node at every try is not one event seen too
+** finely.  16: eight doublings of each of the two nodes one failure names
+** (eps_d to WK_GROUP_WIDEN_MAX eps_d) fit. */
+#define WK_NODE_WIDEN_SPOTS 16
 /* A node of a group lies clearly behind a piece's line (node_behind_piece
 ** in wavefront_group.c) when it is more than this many ulps of its
 ** coordinates behind it: a node's place is a constructed point, off by a few

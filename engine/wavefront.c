@@ -903,7 +903,7 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
     W.eps_d = R->opt.tol_scale * WK_TOL_REL * wk_polygon_scale(P);
     /* tolerance.h: eps_d and eps_t */
     W.eps_t = WK_TOL_TIME * W.eps_d / wmax;
-    W.eps_g = W.eps_d;
+    W.eps_g = W.eps_gmax = W.eps_d;
     /* A polygon with two rings whose vertices lie 3e-10 apart (a hole at a
     ** notch's tip, weighted: tests/test_near_touch.py case 32) has a cascade of sub-tolerance events after
     ** the first split resolved on the input's side, which the tolerance
@@ -931,6 +931,7 @@ done:
     WK_FREE_ARRAY(R, W.swept, W.cap_swept);
     WK_FREE_ARRAY(R, W.comp, W.cap_comp);
     WK_FREE_ARRAY(R, W.cl, W.cap_cl);
+    WK_FREE_ARRAY(R, W.wide, W.cap_wide);
     WK_FREE_ARRAY(R, W.pin, W.cap_pin);
     WK_FREE_ARRAY(R, W.sub, W.cap_sub);
     WK_FREE_ARRAY(R, W.pair, W.cap_pair);

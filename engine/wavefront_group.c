@@ -82,7 +82,7 @@ static wk_status start_node_grid(wk_wavefront *W, double t) {
         hi.y = fmax(hi.y, p.y);
     }
     double wx = hi.x - lo.x, wy = hi.y - lo.y;
-    double h = fmax(fmax((wx + wy) / n, sqrt(wx * wy / n)), 4 * W->eps_g);
+    double h = fmax(fmax((wx + wy) / n, sqrt(wx * wy / n)), 4 * W->eps_gmax);
     if (!isfinite(h) || !isfinite(lo.x) || !isfinite(lo.y)) return WK_OK;
     if (wk_point_grid_reset(W->R, &W->cg, lo.x, lo.y, h) != WK_OK) return W->R->err.code;
     W->cg_on = true;
@@ -119,6 +119,22 @@ static void band_box(wk_point pa, const wk_offset_line *L, double len, double e,
     hi->y = fmax(y1, y2) + e * fabs(L->ny);
 }
 
+/* The radius within which a vertex that covers `travel` in the group's
+** time span arrives at a node of radius r: r and its travel, scaled as the
+** node radius is to eps_d (a coarser node takes in proportionally more). */
+static double arrival_radius(const wk_wavefront *W, double r, double travel) {
+    return r + travel * (r / W->eps_d);
+}
+
+/* The node radius of a node made at p: eps_g, or the radius of a wide spot
+** that covers p (the largest if several; wf_resolve_group). */
+static double node_radius_at(const wk_wavefront *W, wk_point p) {
+    double r = W->eps_g;
+    for (uint32_t i = 0; i < W->n_wide; i++)
+        if (W->wide[i].r > r && wf_dist2(p, W->wide[i].p) <= W->wide[i].r * W->wide[i].r) r = W->wide[i].r;
+    return r;
+}
+
 /* The nearest node within r of p, WK_NONE if there is none.  Nearest, not
 ** the first found: a fast vertex's radius spans several nodes of the group
 ** (a vertex of speed 2e6 covers 18 units in eps_t), and the node it really
@@ -128,16 +144,17 @@ static void band_box(wk_point pa, const wk_offset_line *L, double len, double e,
 ** plan failed at eps_d, and 4 eps_d gave a valid skeleton with unit-sized
 ** features resolved at t = 0
 ** (the fuzz findings integer_needles_a and _b,
-** tests/data/degenerate/needle_tip_nearest_node.wpoly).  Ties: the last. */
-static uint32_t find_cluster_within(wk_wavefront *W, wk_point p, double r) {
-    double best = r * r;
+** tests/data/degenerate/needle_tip_nearest_node.wpoly).  Ties: the last.
+** The radius is node k's, arrival_radius(W, W->cl[k].r, travel). */
+static uint32_t find_cluster_within(wk_wavefront *W, wk_point p, double travel) {
+    double best = INFINITY;
     uint32_t k_best = WK_NONE;
-    bool listed = near_nodes(W, p, p, r);
+    bool listed = near_nodes(W, p, p, arrival_radius(W, W->eps_gmax, travel));
     uint32_t n = listed ? W->cg.n_out : W->n_cl;
     for (uint32_t i = 0; i < n; i++) {
         uint32_t k = listed ? W->cg.out[i] : i;
-        double d2 = wf_dist2(W->cl[k].p, p);
-        if (d2 <= best) {
+        double d2 = wf_dist2(W->cl[k].p, p), r = arrival_radius(W, W->cl[k].r, travel);
+        if (d2 <= r * r && d2 <= best) {
             best = d2;
             k_best = k;
         }
@@ -163,18 +180,37 @@ static uint32_t find_cluster_within(wk_wavefront *W, wk_point p, double r) {
 ** before the node of its own collapse, which it reached at the end of the
 ** span (3.2e-6 later); sent to the edge event, the skeleton closed a cycle
 ** (exit 3; the six comb_spike files of tests/data/fuzz). */
-static uint32_t find_cluster_on_track(wk_wavefront *W, wk_point p, wk_point vel, double dt,
-                                      double r) {
-    double best_d = INFINITY, best_h = INFINITY, best_a = INFINITY, r2 = r * r, e = W->eps_g;
+/* True if node q lies behind one of vertex u's own offset lines at t by
+** more than the rounding of its place (WK_BEHIND_ULPS ulps of its
+** coordinates): u's track runs along the front of both lines, so such a
+** node lies across the outside of u's corner, not on the way of u, however
+** near the track passes it.  find_cluster_on_track skips it (nominal and
+** finer tolerances only, as its 2 eps_g rule).  A 12-gon H near (1e6, 1e6)
+** with a vertex pulled to x = 5e11 (eps_d 500): at t = 0 the tip of the
+** left bar's sliver (speed 2e6, up the bar to the bar's top node at
+** t = 0.5) passed 3 units beside the node of the right bar's foot, across
+** the gap between the bars and behind its own edge 1; taken there (reached
+** first), it joined the two feet across the outside and the arcs closed a
+** cycle (exit 3 in four variants with --check, CGAL valid;
+** tests/data/fuzz/invalid_naive_h_far_tip_across_gap.wpoly). */
+static bool behind_own_line(const wk_wavefront *W, const wk_wf_vertex *u, wk_point q, double t) {
+    double bar = WK_BEHIND_ULPS * DBL_EPSILON * (fabs(q.x) + fabs(q.y));
+    return wk_offset_distance(&W->L[u->ein], q, t) < -bar || wk_offset_distance(&W->L[u->eout], q, t) < -bar;
+}
+
+static uint32_t find_cluster_on_track(wk_wavefront *W, const wk_wf_vertex *u, double t, double dt,
+                                      double travel) {
+    wk_point p = wk_wf_pos(u, t), vel = u->vel;
+    double best_d = INFINITY, best_h = INFINITY, best_a = INFINITY;
     double v2 = vel.x * vel.x + vel.y * vel.y;
     uint32_t k_best = WK_NONE;
-    bool listed = near_nodes(W, p, p, r);
+    bool listed = near_nodes(W, p, p, arrival_radius(W, W->eps_gmax, travel));
     uint32_t n = listed ? W->cg.n_out : W->n_cl;
     for (uint32_t i = 0; i < n; i++) {
         uint32_t k = listed ? W->cg.out[i] : i;
         wk_point q = W->cl[k].p;
-        double a2 = wf_dist2(q, p);
-        if (a2 > r2) continue;
+        double a2 = wf_dist2(q, p), r = arrival_radius(W, W->cl[k].r, travel), e = W->cl[k].r;
+        if (a2 > r * r) continue;
         double h = v2 > 0 ? ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2 : 0;
         bool behind = h < 0; /* the vertex left the node, moves away from it */
         h = fmin(fmax(h, 0), dt);
@@ -197,6 +233,7 @@ static uint32_t find_cluster_on_track(wk_wavefront *W, wk_point p, wk_point vel,
         ** behind a vertex of speed 1.25e8, and only that picture is
         ** valid there. */
         if (W->input_sides && d > 2 * e) continue;
+        if (W->input_sides && behind_own_line(W, u, q, t)) continue;
         /* Among nodes equally near the track (within eps_g), one the vertex
         ** reaches (ahead of it, nearest along the track first) wins over one
         ** it has left behind (nearest of those if there is no other); a node
@@ -225,14 +262,16 @@ static uint32_t find_cluster_on_track(wk_wavefront *W, wk_point p, wk_point vel,
     return k_best;
 }
 
-/* The first node within eps_g of p, WK_NONE if there is none. */
+/* The first node within node radius of p (the node's, or a node made at p
+** would have), WK_NONE if there is none. */
 static uint32_t find_cluster(wk_wavefront *W, wk_point p) {
-    double e2 = W->eps_g * W->eps_g;
-    bool listed = near_nodes(W, p, p, W->eps_g);
+    double rp = W->n_wide ? node_radius_at(W, p) : W->eps_g;
+    bool listed = near_nodes(W, p, p, W->eps_gmax);
     uint32_t n = listed ? W->cg.n_out : W->n_cl;
     for (uint32_t i = 0; i < n; i++) {
         uint32_t k = listed ? W->cg.out[i] : i;
-        if (wf_dist2(W->cl[k].p, p) <= e2) return k;
+        double e = fmax(W->cl[k].r, rp);
+        if (wf_dist2(W->cl[k].p, p) <= e * e) return k;
     }
     return WK_NONE;
 }
@@ -240,7 +279,7 @@ static uint32_t find_cluster(wk_wavefront *W, wk_point p) {
 /* A new node at p (own: the seed it belongs to alone, or WK_NONE). */
 static wk_status new_cluster(wk_wavefront *W, wk_point p, uint32_t own, uint32_t *k) {
     if (WK_GROW(W->R, W->cl, W->cap_cl, W->n_cl + 1) != WK_OK) return W->R->err.code;
-    W->cl[W->n_cl] = (wk_wf_cluster){p, WK_NONE, 0, 0, 0, 0, 0, 0, own};
+    W->cl[W->n_cl] = (wk_wf_cluster){p, WK_NONE, 0, 0, 0, 0, 0, 0, own, node_radius_at(W, p)};
     *k = W->n_cl++;
     if (own != WK_NONE) W->n_own++;
     if (W->cg_on && wk_point_grid_add(W->R, &W->cg, *k, p) != WK_OK) return W->R->err.code;
@@ -459,15 +498,16 @@ static void sort_by_endpoints(const wk_wavefront *W, uint32_t *a, uint32_t n) {
 static uint32_t track_node_ahead(wk_wavefront *W, uint32_t f, double t) {
     const wk_wf_vertex *F = &W->v[f];
     wk_point p = wk_wf_pos(F, t), vel = F->vel;
-    double v2 = vel.x * vel.x + vel.y * vel.y, e2 = W->eps_g * W->eps_g, best_h = INFINITY;
+    double v2 = vel.x * vel.x + vel.y * vel.y, best_h = INFINITY;
     if (!(v2 > 0)) return WK_NONE;
     wk_point e = {p.x + vel.x * W->eps_t, p.y + vel.y * W->eps_t};
     wk_point lo = {fmin(p.x, e.x), fmin(p.y, e.y)}, hi = {fmax(p.x, e.x), fmax(p.y, e.y)};
-    bool listed = near_nodes(W, lo, hi, W->eps_g);
+    bool listed = near_nodes(W, lo, hi, W->eps_gmax);
     uint32_t n = listed ? W->cg.n_out : W->n_cl, k_best = WK_NONE;
     for (uint32_t i = 0; i < n; i++) {
         uint32_t k = listed ? W->cg.out[i] : i;
         wk_point q = W->cl[k].p;
+        double e2 = W->cl[k].r * W->cl[k].r;
         if (wf_dist2(q, p) <= e2) continue;
         double h = ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2;
         if (!(h > 0) || h > W->eps_t) continue;
@@ -480,17 +520,18 @@ static uint32_t track_node_ahead(wk_wavefront *W, uint32_t f, double t) {
     return k_best;
 }
 
-/* True if vertex f passed within eps_g of point q at some moment of the
-** last eps_t (its track p + vel h, h in [max(t0, t - eps_t) - t, 0]): it
-** left q no longer ago than the time tolerance. */
-static bool left_node_lately(const wk_wavefront *W, uint32_t f, wk_point q, double t) {
+/* True if vertex f passed within r (the node radius of node q) of point q
+** at some moment of the last eps_t (its track p + vel h, h in
+** [max(t0, t - eps_t) - t, 0]): it left q no longer ago than the time
+** tolerance. */
+static bool left_node_lately(const wk_wavefront *W, uint32_t f, wk_point q, double r, double t) {
     const wk_wf_vertex *F = &W->v[f];
     wk_point p = wk_wf_pos(F, t), vel = F->vel;
     double v2 = vel.x * vel.x + vel.y * vel.y, h_min = fmin(fmax(F->t0, t - W->eps_t) - t, 0);
     double h = v2 > 0 ? ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2 : 0;
     h = fmin(fmax(h, h_min), 0);
     wk_point c = {p.x + vel.x * h, p.y + vel.y * h};
-    return wf_dist2(q, c) <= W->eps_g * W->eps_g;
+    return wf_dist2(q, c) <= r * r;
 }
 
 static bool is_swept(const wk_wavefront *W, uint32_t u) {
@@ -512,7 +553,8 @@ static uint32_t forced_track_node(wk_wavefront *W, uint32_t f, double t) {
     double v2 = vel.x * vel.x + vel.y * vel.y, best_h = -INFINITY;
     for (uint32_t k = 0; k < W->n_cl; k++) {
         wk_point q = W->cl[k].p;
-        if (wf_dist2(q, p) <= W->eps_g * W->eps_g || !left_node_lately(W, f, q, t)) continue;
+        double r = W->cl[k].r;
+        if (wf_dist2(q, p) <= r * r || !left_node_lately(W, f, q, r, t)) continue;
         double h = v2 > 0 ? ((q.x - p.x) * vel.x + (q.y - p.y) * vel.y) / v2 : 0;
         if (h > best_h) {
             best_h = h;
@@ -896,9 +938,8 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
         ** eps_t: a reflex vertex of speed 4e5 then arrived at a node 2.4
         ** units away, in a group of one event (the same H with needles) */
         double speed = fabs(u->vel.x) + fabs(u->vel.y), dt = track_span(W, W->comp[i], t);
-        double r = W->eps_g + speed * dt * (W->eps_g / W->eps_d);
-        u->at = speed * dt > W->eps_g ? find_cluster_on_track(W, wk_wf_pos(u, t), u->vel, dt, r)
-                                      : find_cluster_within(W, wk_wf_pos(u, t), r);
+        u->at = speed * dt > W->eps_g ? find_cluster_on_track(W, u, t, dt, speed * dt)
+                                      : find_cluster_within(W, wk_wf_pos(u, t), speed * dt);
         if (u->at == WK_NONE && u->forced)
             u->at = forced_track_node(W, W->comp[i], t);
         if (u->at != WK_NONE && W->n_shield && shield_of(W, W->comp[i], u->at)) u->at = WK_NONE;
@@ -954,16 +995,16 @@ static bool end_arrives_outside(wk_wavefront *W, const wk_wf_vertex *c, double t
     const wk_offset_line *L = &W->L[c->eout];
     double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
     wk_point e = {a.x + len * L->ux, a.y + len * L->uy}, lo, hi;
-    band_box(e, L, 0, W->eps_g, &lo, &hi);
-    bool listed = near_nodes(W, lo, hi, W->eps_g);
+    band_box(e, L, 0, W->eps_gmax, &lo, &hi);
+    bool listed = near_nodes(W, lo, hi, W->eps_gmax);
     uint32_t m = listed ? W->cg.n_out : W->n_cl;
     for (uint32_t i = 0; i < m; i++) {
         uint32_t k = listed ? W->cg.out[i] : i;
         if (k == c->at) continue;
         wk_point q = W->cl[k].p;
-        double s = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
+        double s = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy, r = W->cl[k].r;
         double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
-        if (s >= len - W->eps_g && s <= len + W->eps_g && fabs(off) <= W->eps_g) return false;
+        if (s >= len - r && s <= len + r && fabs(off) <= r) return false;
     }
     return true;
 }
@@ -986,15 +1027,15 @@ static bool local_walk_suffices(wk_wavefront *W, double t) {
         const wk_offset_line *L = &W->L[o->eout];
         double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
         wk_point lo, hi;
-        band_box(a, L, len, W->eps_g, &lo, &hi);
-        bool listed = near_nodes(W, lo, hi, W->eps_g);
+        band_box(a, L, len, W->eps_gmax, &lo, &hi);
+        bool listed = near_nodes(W, lo, hi, W->eps_gmax);
         uint32_t n = listed ? W->cg.n_out : W->n_cl;
         for (uint32_t i = 0; i < n; i++) {
             uint32_t k = listed ? W->cg.out[i] : i;
             wk_point q = W->cl[k].p;
-            double s = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
+            double s = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy, r = W->cl[k].r;
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
-            if (s >= -W->eps_g && s <= len + W->eps_g && fabs(off) <= W->eps_g) return false;
+            if (s >= -r && s <= len + r && fabs(off) <= r) return false;
         }
     }
     return true;
@@ -1057,7 +1098,7 @@ static bool local_walk_outgrown(const wk_wavefront *W) {
 ** node pinched edge 7 and the arcs closed a cycle (exit 3;
 ** invalid_naive_h_needles_spike_in_needle.wpoly, with cancel_across). */
 static bool crossed_beyond_piece(const wk_wavefront *W, const wk_wf_vertex *u, uint32_t a, double rate,
-                                 double t, double bar) {
+                                 double t, double bar, double r) {
     const wk_wf_vertex *A = &W->v[a], *B = &W->v[A->next];
     const wk_offset_line *L = &W->L[A->eout];
     double d = wk_offset_distance(L, wk_wf_pos(u, t), t);
@@ -1069,7 +1110,7 @@ static bool crossed_beyond_piece(const wk_wavefront *W, const wk_wf_vertex *u, u
     wk_point pu = wk_wf_pos(u, tc), pa = wk_wf_pos(A, tc), pb = wk_wf_pos(B, tc);
     double s = (pu.x - pa.x) * L->ux + (pu.y - pa.y) * L->uy;
     double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
-    return s < -W->eps_g || s > len + W->eps_g;
+    return s < -r || s > len + r;
 }
 
 static bool node_behind_piece(const wk_wavefront *W, uint32_t k, uint32_t a, double off, wk_point q,
@@ -1088,7 +1129,7 @@ static bool node_behind_piece(const wk_wavefront *W, uint32_t k, uint32_t a, dou
         ** (the H with needles of wf_never_reaches_line) */
         double rate = L->nx * u->vel.x + L->ny * u->vel.y - L->w;
         if (rate < 0 && !wf_never_reaches_line(W, W->comp[i], e) &&
-            !crossed_beyond_piece(W, u, a, rate, t, WK_BEHIND_ULPS * ulp))
+            !crossed_beyond_piece(W, u, a, rate, t, WK_BEHIND_ULPS * ulp, W->cl[k].r))
             return false;
     }
     return any;
@@ -1107,17 +1148,17 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
         const wk_offset_line *L = &W->L[A->eout];
         double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
         wk_point lo, hi;
-        band_box(pa, L, len, W->eps_g, &lo, &hi);
-        bool listed = near_nodes(W, lo, hi, W->eps_g);
+        band_box(pa, L, len, W->eps_gmax, &lo, &hi);
+        bool listed = near_nodes(W, lo, hi, W->eps_gmax);
         uint32_t n = listed ? W->cg.n_out : W->n_cl;
         for (uint32_t ki = 0; ki < n; ki++) {
             uint32_t k = listed ? W->cg.out[ki] : ki;
             if (k == A->at || k == B->at) continue;
             wk_point q = W->cl[k].p;
-            double s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
-            if (s < -W->eps_g || s > len + W->eps_g) continue;
+            double s = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy, r = W->cl[k].r;
+            if (s < -r || s > len + r) continue;
             double off = (q.x - pa.x) * L->nx + (q.y - pa.y) * L->ny;
-            if (fabs(off) > W->eps_g) continue;
+            if (fabs(off) > r) continue;
             if (node_behind_piece(W, k, a, off, q, t)) continue;
             /* A node on the line within tolerance of an end of the piece: that
             ** end arrives at the node (else the node would touch the piece
@@ -1125,11 +1166,11 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
             ** shielded end does not: the node cuts the piece it is shielded
             ** on next to it, and misses its other piece (plan_shields). */
             const wk_wf_shield *sh = NULL;
-            if (s <= W->eps_g && !(W->n_shield && (sh = shield_of(W, a, k)))) {
+            if (s <= r && !(W->n_shield && (sh = shield_of(W, a, k)))) {
                 if (A->at == WK_NONE) W->v[a].at = k;
                 continue;
             }
-            if (s >= len - W->eps_g && !(W->n_shield && (sh = shield_of(W, A->next, k)))) {
+            if (s >= len - r && !(W->n_shield && (sh = shield_of(W, A->next, k)))) {
                 if (B->at == WK_NONE) W->v[A->next].at = k;
                 continue;
             }
@@ -1166,9 +1207,9 @@ static wk_status plan_seed_cuts(wk_wavefront *W, double t) {
         double len = (pb.x - pa.x) * L->ux + (pb.y - pa.y) * L->uy;
         double sq = (q.x - pa.x) * L->ux + (q.y - pa.y) * L->uy;
         bool shielded = W->n_shield && (shield_of(W, a, k) || shield_of(W, A->next, k));
-        if (sq <= W->eps_g && !shielded) {
+        if (sq <= W->cl[k].r && !shielded) {
             W->v[a].at = k;
-        } else if (sq >= len - W->eps_g && !shielded) {
+        } else if (sq >= len - W->cl[k].r && !shielded) {
             W->v[A->next].at = k;
         } else {
             if (WK_GROW(R, W->pin, W->cap_pin, W->n_pin + 1) != WK_OK) return R->err.code;
@@ -1208,12 +1249,43 @@ static wk_status plan_sub_pieces(wk_wavefront *W) {
     return WK_OK;
 }
 
-/* True if sub-piece a (between two nodes) and its opposite, sin_ab apart
+/* True if a vertex of the plan between the edges of sub-pieces a and b
+** (one's ein, the other's eout) arrives at one of a's two nodes: the two
+** pieces are the sides of a spike whose tip is that node. */
+static bool spike_tip_at(const wk_wavefront *W, const wk_wf_sub *a, const wk_wf_sub *b) {
+    uint32_t p = NODE_OF(a->from), q = NODE_OF(a->to);
+    for (uint32_t i = 0; i < W->n_comp; i++) {
+        const wk_wf_vertex *u = &W->v[W->comp[i]];
+        if ((u->at == p || u->at == q) && ((u->ein == a->edge && u->eout == b->edge) ||
+                                           (u->ein == b->edge && u->eout == a->edge)))
+            return true;
+    }
+    return false;
+}
+
+/* True if sub-piece a (between two nodes) and its opposite b, sin_ab apart
 ** in direction, bound a long thin sliver (tolerance.h,
-** WK_CANCEL_SLIVER_RADII). */
-static bool is_sliver(const wk_wavefront *W, const wk_wf_sub *a, double sin_ab) {
-    double len = sqrt(wf_dist2(W->cl[NODE_OF(a->from)].p, W->cl[NODE_OF(a->to)].p));
-    return len >= WK_CANCEL_SLIVER_RADII * W->eps_g && sin_ab * len <= 2 * W->eps_g;
+** WK_CANCEL_SLIVER_RADII), or a short one that is a spike: the vertex
+** between their edges is at one node and both sides pass within 2 node
+** radii of the other (sin L <= 2 r).  Such a spike collapses along itself,
+** its tip running to the other node along the bisector of its two edges,
+** which is the arc the cancellation leaves.  Refused, the retries merged
+** the two nodes at 4 or 8 times the radius, and the merged node took in
+** vertices around it that were not part of the spike: a weighted 12-gon H
+** with a spike to 5e8 (eps_d 0.5; edges 10 and 11 cancel between nodes 2.6
+** apart at t = 0.0096) put the spike's node at y 1.77e8, where paper 004's
+** variant (its own wavefront) has the exact one at 4.87e8
+** (tests/data/fuzz/mismatch_deforming_h_spike_weights_120.wpoly), and a
+** weighted comb with a vertex at 5e10 (eps_d 50; edges 9 and 10, nodes 269
+** apart at t = 5.79, merged only at 400) ended faces 5, 6, 7 at t = 5.79,
+** where papers 000's and 004's variants end them at t = 28.3
+** (mismatch_arrangement_wcomb_32dfdbca.wpoly).  With the rule both are
+** planned at eps_d and every variant agrees. */
+static bool is_sliver(const wk_wavefront *W, const wk_wf_sub *a, const wk_wf_sub *b, double sin_ab) {
+    const wk_wf_cluster *P = &W->cl[NODE_OF(a->from)], *Q = &W->cl[NODE_OF(a->to)];
+    double len = sqrt(wf_dist2(P->p, Q->p)), r = fmax(P->r, Q->r);
+    if (!(sin_ab * len <= 2 * r)) return false;
+    return len >= WK_CANCEL_SLIVER_RADII * r || spike_tip_at(W, a, b);
 }
 
 /* Cancel sub-pieces a and b (opposite, between the same two nodes). */
@@ -1228,11 +1300,14 @@ static wk_status cancel_pair(wk_wavefront *W, wk_wf_sub *a, wk_wf_sub *b) {
     const wk_offset_line *La = &W->L[a->edge], *Lb = &W->L[b->edge];
     double sin_ab = fabs(La->ux * Lb->uy - La->uy * Lb->ux);
     if (a->edge != b->edge &&
-        (La->ux * Lb->ux + La->uy * Lb->uy > 0 || (sin_ab > WK_CANCEL_SIN && !is_sliver(W, a, sin_ab))))
+        (La->ux * Lb->ux + La->uy * Lb->uy > 0 || (sin_ab > WK_CANCEL_SIN && !is_sliver(W, a, b, sin_ab)))) {
+        W->fail_node[0] = NODE_OF(a->from);
+        W->fail_node[1] = NODE_OF(a->to);
         return WK_FAIL(W->R, WK_EALGO, W->P->name, 0,
                        "wavefront: pieces of non-parallel edges %u and %u cancel between "
                        "two nodes",
                        a->edge, b->edge);
+    }
     /* 2: cancelled, leaves an arc; 1: one edge folded onto
     ** itself within tolerance, which traces nothing */
     a->dead = b->dead = a->edge == b->edge ? 1 : 2;
@@ -1474,7 +1549,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
         const wk_wf_vertex *X = &W->v[x];
         uint32_t k = W->v[X->prev].at;
         if (X->at == WK_NONE || !X->reflex || k == WK_NONE || k == X->at || W->v[X->next].at != k ||
-            X->prev == X->next || is_swept(W, x) || !left_node_lately(W, x, W->cl[k].p, t))
+            X->prev == X->next || is_swept(W, x) || !left_node_lately(W, x, W->cl[k].p, W->cl[k].r, t))
             continue;
         bool pinched = false;
         for (uint32_t j = 0; j < W->n_pin; j++) pinched |= W->pin[j].piece == X->prev || W->pin[j].piece == x;
@@ -1498,7 +1573,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
         if (!has_reverse(W, x, n_by)) continue;
         /* an untouched crack tip */
         if (W->v[x->to].reflex && !is_swept(W, x->to) &&
-            left_node_lately(W, x->to, W->cl[NODE_OF(x->from)].p, t) &&
+            left_node_lately(W, x->to, W->cl[NODE_OF(x->from)].p, W->cl[NODE_OF(x->from)].r, t) &&
             wf_push_u32(R, &W->swept, &W->n_swept, &W->cap_swept, x->to) != WK_OK)
             return R->err.code;
         if (wf_force(W, x->to) != WK_OK) return R->err.code;
@@ -1511,13 +1586,14 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
         wk_point a = W->cl[NODE_OF(x->from)].p, b = W->cl[NODE_OF(x->to)].p;
         const wk_offset_line *L = &W->L[x->edge];
         double len = (b.x - a.x) * L->ux + (b.y - a.y) * L->uy;
+        double r = fmax(W->cl[NODE_OF(x->from)].r, W->cl[NODE_OF(x->to)].r);
         if (W->cg_on && !W->vg_on && W->n_comp >= WF_GRID_MIN && start_vertex_grid(W, t) != WK_OK)
             return R->err.code;
         bool listed = false;
         if (W->vg_on) {
             wk_point lo, hi;
-            band_box(a, L, len, W->eps_g, &lo, &hi);
-            widen(&lo, &hi, W->eps_g);
+            band_box(a, L, len, r, &lo, &hi);
+            widen(&lo, &hi, r);
             listed = wk_point_grid_query(&W->vg, lo, hi, (uint64_t)W->n_comp + 16);
         }
         uint32_t n = listed ? W->vg.n_out : W->n_comp;
@@ -1528,7 +1604,7 @@ static wk_status plan_force_touching(wk_wavefront *W, double t, bool *again) {
             wk_point q = wk_wf_pos(u, t);
             double sq = (q.x - a.x) * L->ux + (q.y - a.y) * L->uy;
             double off = (q.x - a.x) * L->nx + (q.y - a.y) * L->ny;
-            if (sq <= -W->eps_g || sq >= len + W->eps_g || fabs(off) > W->eps_g) continue;
+            if (sq <= -r || sq >= len + r || fabs(off) > r) continue;
             if (wf_never_reaches_line(W, W->comp[j], x->edge)) continue;
             if (wf_force(W, W->comp[j]) != WK_OK) return R->err.code;
             *again = true;
@@ -1596,12 +1672,12 @@ static bool zip_overlap_dirs(const wk_wavefront *W, uint32_t ea, uint32_t eb) {
     return d <= WK_ANGLE_EQ || fabs(d - TWO_PI) <= WK_ANGLE_EQ;
 }
 
-/* The radius within which untouched vertex u arrives at a node
+/* The radius within which untouched vertex u arrives at a node of radius r
 ** (plan_arrivals). */
-static double zip_arrival_radius(const wk_wavefront *W, uint32_t u, double t) {
+static double zip_arrival_radius(const wk_wavefront *W, uint32_t u, double r, double t) {
     const wk_wf_vertex *U = &W->v[u];
     double speed = fabs(U->vel.x) + fabs(U->vel.y);
-    return W->eps_g + speed * (W->t_last - t) * (W->eps_g / W->eps_d);
+    return arrival_radius(W, r, speed * (W->t_last - t));
 }
 
 static wk_status zip_force(wk_wavefront *W, uint32_t u) {
@@ -1635,11 +1711,11 @@ static wk_status zip_overlap(wk_wavefront *W, double t, wk_point P, uint32_t fa,
         wk_point Q = wk_wf_pos(&W->v[far], t);
         uint32_t other = far == fa ? fb : fa;
         if (IS_NODE(other) || W->v[other].seen != W->stamp) return WK_OK;
-        double clear = WK_ZIP_CLEAR * zip_arrival_radius(W, far, t);
+        double rq = node_radius_at(W, Q), clear = WK_ZIP_CLEAR * zip_arrival_radius(W, far, rq, t);
         if (wf_dist2(P, Q) <= clear * clear) return WK_OK;
         if (find_cluster(W, Q) != WK_NONE) return WK_OK;
         wk_point po = wk_wf_pos(&W->v[other], t);
-        double d_o = sqrt(wf_dist2(Q, po)), r_o = zip_arrival_radius(W, other, t);
+        double d_o = sqrt(wf_dist2(Q, po)), r_o = zip_arrival_radius(W, other, rq, t);
         bool both = d_o <= r_o; /* other arrives at Q too (a tie) */
         if (!both) {
             if (d_o <= WK_ZIP_CLEAR * fmax(r_o, clear / WK_ZIP_CLEAR)) return WK_OK;
@@ -1647,7 +1723,7 @@ static wk_status zip_overlap(wk_wavefront *W, double t, wk_point P, uint32_t fa,
             const wk_offset_line *L = &W->L[other == fa ? ea : eb];
             double off = (Q.x - po.x) * L->nx + (Q.y - po.y) * L->ny;
             double ulp = DBL_EPSILON * (fabs(Q.x) + fabs(Q.y));
-            if (!(fabs(off) <= fmin(WK_BEHIND_ULPS * ulp, W->eps_g))) return WK_OK;
+            if (!(fabs(off) <= fmin(WK_BEHIND_ULPS * ulp, rq))) return WK_OK;
         }
         /* advance the chains whose end arrives at Q */
         if (far == fa || both) {
@@ -1719,6 +1795,7 @@ static wk_status plan_pairs(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
     for (uint32_t k = 0; k < W->n_cl; k++) {
         wk_wf_cluster *c = &W->cl[k];
+        W->fail_node[0] = k; /* a failure here names node k */
         uint32_t nin = 0, nout = 0;
         for (uint32_t j = 0; j < c->count; j++) (W->slot[c->first + j] & NODE_BIT) ? nin++ : nout++;
         if (nin != nout)
@@ -1766,6 +1843,7 @@ static wk_status plan_pairs(wk_wavefront *W, double t, bool *again) {
             W->pair[W->n_pair++] = (wk_wf_pair){in, best, k, WK_NONE};
         }
     }
+    W->fail_node[0] = WK_NONE;
     return WK_OK;
 }
 
@@ -1775,6 +1853,7 @@ static wk_status plan(wk_wavefront *W, double t, bool *again) {
     wk_run *R = W->R;
     *again = false;
     W->n_cl = W->n_pin = W->n_sub = W->n_pair = W->n_own = 0;
+    W->fail_node[0] = W->fail_node[1] = WK_NONE;
     if (plan_nodes(W, t) != WK_OK || plan_shields(W, t) != WK_OK || plan_slow_stretches(W, t) != WK_OK)
         return R->err.code;
     if (plan_arrivals(W, t) != WK_OK) return R->err.code;
@@ -2264,20 +2343,65 @@ static wk_status plan_rounds(wk_wavefront *W, double t) {
     }
 }
 
+/* The wide spot a failed plan asks for at node k (false: none): k's place
+** with twice its radius, while that stays within WK_GROUP_WIDEN_MAX eps_d. */
+static bool wide_spot_for(const wk_wavefront *W, uint32_t k, wk_wf_wide *spot) {
+    if (k == WK_NONE || k >= W->n_cl) return false;
+    *spot = (wk_wf_wide){W->cl[k].p, 2 * W->cl[k].r};
+    return spot->r <= WK_GROUP_WIDEN_MAX * W->eps_d;
+}
+
 wk_status wf_resolve_group(wk_wavefront *W, double t) {
     wk_run *R = W->R;
     W->n_fresh = 0;
     W->n_dead = 0;
     /* A group that cannot be planned consistently at eps_d (nodes of a
     ** skeleton feature below the tolerance, split between clusters) is
-    ** planned again with twice the node radius, up to WK_GROUP_WIDEN_MAX
-    ** eps_d: a coarser picture of the same instant, still far inside the
-    ** validator's tolerance.  Planning changes nothing but scratch state, so
-    ** a retry starts from the same wavefront. */
-    for (W->eps_g = W->eps_d;; W->eps_g *= 2) {
+    ** planned again with a coarser node where the plan failed: the node (or
+    ** the two nodes) the failure names gets twice its radius, and so does
+    ** every node made within that radius of its place on the next try (a
+    ** wide spot, node_radius_at), up to WK_GROUP_WIDEN_MAX eps_d: a coarser
+    ** picture of that event, still far inside the validator's tolerance,
+    ** while every other node of the group keeps eps_d.  Widening the whole
+    ** group made every node of it coarse, so that a node far from the
+    ** failing event could take in vertices that were not part of its own.
+    ** Measured: a weighted comb with a vertex at 5e10 (eps_d 50) failed at
+    ** t = 5.79 until its nodes were 400 wide; before is_sliver's spike rule
+    ** (which now plans it at eps_d) the whole group at 400 ended faces 5, 6,
+    ** 7 at t = 5.79 and the widened pair alone at t = 20.5, the exact node
+    ** being at t = 28.3 (tests/data/fuzz/mismatch_arrangement_wcomb_32dfdbca.wpoly).
+    ** The failing node itself still takes in what lies within its new
+    ** radius (there vertices 157 and 180 away at 200).
+    ** The whole group is still widened, as before (the spots dropped), as
+    ** the last resort: when the failure names no node ("too many spikes"),
+    ** when the named nodes are already WK_GROUP_WIDEN_MAX eps_d wide, or after
+    ** WK_NODE_WIDEN_SPOTS spots (a failure that moves on at every try);
+    ** that ladder is the old rule, so a group it planned is still planned.
+    ** Planning changes nothing but scratch state, so a retry starts from
+    ** the same wavefront. */
+    W->n_wide = 0;
+    W->eps_g = W->eps_gmax = W->eps_d;
+    bool whole = false; /* the last resort's ladder has begun */
+    for (;;) {
         if (plan_rounds(W, t) == WK_OK) break;
-        if (R->err.code != WK_EALGO || W->eps_g >= WK_GROUP_WIDEN_MAX * W->eps_d) return R->err.code;
+        if (R->err.code != WK_EALGO) return R->err.code;
+        wk_wf_wide spot[2];
+        uint32_t n_spot = 0;
+        for (int i = 0; i < 2 && !whole && W->n_wide + 2 <= WK_NODE_WIDEN_SPOTS; i++)
+            if (wide_spot_for(W, W->fail_node[i], &spot[n_spot])) n_spot++;
+        if (!n_spot && whole && W->eps_g >= WK_GROUP_WIDEN_MAX * W->eps_d) return R->err.code;
         wk_run_clear_error(R);
+        if (!n_spot) {
+            W->eps_g = W->eps_gmax = whole ? 2 * W->eps_g : 2 * W->eps_d;
+            W->n_wide = 0;
+            whole = true;
+            continue;
+        }
+        if (WK_GROW(R, W->wide, W->cap_wide, W->n_wide + n_spot) != WK_OK) return R->err.code;
+        for (uint32_t i = 0; i < n_spot; i++) {
+            W->wide[W->n_wide++] = spot[i];
+            W->eps_gmax = fmax(W->eps_gmax, spot[i].r);
+        }
     }
     if (commit(W, t) != WK_OK || count_group(W, t) != WK_OK) return R->err.code;
     /* collinear rule for fresh vertices between parallel edges */

@@ -59,7 +59,13 @@ typedef struct wk_wf_cluster {
     uint32_t own;      /* WK_NONE, or the one seed whose node this is: a split
                           kept apart from a node within eps_d
                           (wavefront_group.c, plan_shields) */
+    double r;          /* its node radius: eps_g, or a wide spot's
+                          (wavefront_group.c, node_radius_at) */
 } wk_wf_cluster;
+
+/* A place where a plan failed at its node radius: nodes within r of p get
+** radius r on the next try (wavefront_group.c, wf_resolve_group). */
+typedef struct wk_wf_wide { wk_point p; double r; } wk_wf_wide;
 
 /* A node cutting piece `piece` at distance s from its start. */
 typedef struct wk_wf_pinch { uint32_t piece; double s; uint32_t node; } wk_wf_pinch;
@@ -98,8 +104,12 @@ struct wk_wavefront {
                           may pass it through a finder's own events, which
                           are no events of the skeleton: a PSLG's default
                           horizon counts from t_group */
-    double eps_g;      /* node radius of the group being planned: eps_d, or
-                          wider on a retry (wf_resolve_group) */
+    double eps_g;      /* node radius of the group being planned away from
+                          its wide spots: eps_d, or wider on the last-resort
+                          retry of the whole group (wf_resolve_group) */
+    wk_wf_wide *wide; uint32_t n_wide, cap_wide; /* this group's wide spots */
+    double eps_gmax;   /* the largest node radius of the plan (eps_g, spots) */
+    uint32_t fail_node[2]; /* the nodes a failed plan names (WK_NONE: none) */
     wk_point origin;   /* all positions are relative to it (bounding-box centre) */
     uint32_t stamp;
     /* group scratch, kept between groups */
