@@ -307,6 +307,13 @@
 ** WK_RAY_RESHOOT_DELAY * eps_t later, when the vertex has moved off it. */
 #define WK_RAY_END_SNAP 1e-9
 #define WK_RAY_RESHOOT_DELAY 1e3
+/* ... but when v would reach the line of a piece at the corner within that
+** delay, the reshoot comes after this share of the time to that meeting:
+** eps_d / wmax is no moment when a far vertex makes eps_d large, and a
+** reshoot after v's own split of the corner's piece finds the piece behind
+** v (wavefront_ray.c, reshoot_delay).  One half: the corner vertex moves
+** off the ray, and v is still short of every piece there. */
+#define WK_RAY_RESHOOT_GAP_SHARE 0.5
 /* The reshoot picks among the pieces that pass within WK_RAY_RESHOOT_NEAR *
 ** eps_d of the hit point at the time of the first shot (vertices that close
 ** are one point to the simulation): which of the pieces at that vertex the

@@ -201,8 +201,10 @@ double wk_wf_ray_hit_piece(const wk_wavefront *W, wk_point o, wk_point u, uint32
 ** cycle, O(cycle), or over every alive piece with holes or v = WK_NONE (a
 ** hole's cycle may not have joined v's yet).  A hit at a piece's end
 ** (within WK_RAY_END_SNAP) is shot again WK_RAY_RESHOOT_DELAY * eps_t
-** later, when the vertex there has moved off the ray, among the pieces at
-** the hit point (WK_RAY_RESHOOT_NEAR; all, if it meets none of them then).
+** later (sooner, WK_RAY_RESHOOT_GAP_SHARE, when v would reach a piece
+** there by then), when the vertex there has moved off the ray, among the
+** pieces at the hit point (WK_RAY_RESHOOT_NEAR; all, if it meets none of
+** them then).
 ** v's own two pieces are never hit.  WK_NONE if the ray meets nothing. */
 uint32_t wk_wf_ray_shoot(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, double t,
                          double lambda0);

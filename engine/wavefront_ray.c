@@ -80,6 +80,43 @@ static uint32_t shoot_at(const wk_wavefront *W, wk_point o, wk_point u, uint32_t
     return best;
 }
 
+/* The delay of a reshoot at a corner: WK_RAY_RESHOOT_DELAY * eps_t, unless
+** v reaches the line of a piece at the hit corner within that delay (the
+** line's crossing with the ray and v close in on each other): then
+** WK_RAY_RESHOOT_GAP_SHARE of the time to that meeting, and never below
+** eps_t.  Only those shots change: a reshoot after the meeting finds the
+** piece behind v, never the one v meets.  eps_t * 1e3 is eps_d /
+** wmax: with a vertex 5e10 away (eps_d 50, unit weights) that is 50 time
+** units, and a reflex vertex whose ray passed a reflex corner at
+** t = 15.2 was shot again at t = 65.4, after its own split of the corner's
+** piece at t = 46.3: the hit was behind it, the whole cycle gave a piece
+** beyond that v never meets, its split was lost and the run looped until
+** "no progress" at t = 55.4 (exit 2; solved only at 16 times coarser
+** tolerances, not as the reference: tests/data/fuzz/
+** mismatch_arrangement_monotone48_far_5e10.wpoly, issue 11). */
+static double reshoot_delay(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, uint32_t a,
+                            double t, double lambda0, double bl) {
+    double eps_t = wk_wf_eps_t(W), delay = WK_RAY_RESHOOT_DELAY * eps_t, cap = delay;
+    wk_point vel = wk_wf_velocity(W, v);
+    double rv = vel.x * u.x + vel.y * u.y;
+    /* the corner: a's end nearer the hit, and the pieces on both sides */
+    uint32_t b = wk_wf_next(W, a);
+    wk_point pa = wk_wf_position(W, a, t), pb = wk_wf_position(W, b, t);
+    wk_point x = {o.x + bl * u.x, o.y + bl * u.y};
+    uint32_t c = hypot(pa.x - x.x, pa.y - x.y) <= hypot(pb.x - x.x, pb.y - x.y) ? a : b;
+    uint32_t two[2] = {wk_wf_prev(W, c), c};
+    for (int i = 0; i < 2; i++) {
+        const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, two[i]));
+        double l0 = wk_wf_ray_on_line(o, u, L, t), l1 = wk_wf_ray_on_line(o, u, L, t + 1);
+        if (!isfinite(l0) || !isfinite(l1)) continue;
+        double gap = l0 - lambda0, close = rv - (l1 - l0);
+        if (!(gap > 0) || !(close > 0)) continue;
+        double meet = gap / close;
+        if (meet <= delay && WK_RAY_RESHOOT_GAP_SHARE * meet < cap) cap = WK_RAY_RESHOOT_GAP_SHARE * meet;
+    }
+    return cap > eps_t ? cap : eps_t;
+}
+
 uint32_t wk_wf_ray_shoot(const wk_wavefront *W, wk_point o, wk_point u, uint32_t v, double t,
                          double lambda0) {
     bool at_end = false;
@@ -92,7 +129,7 @@ uint32_t wk_wf_ray_shoot(const wk_wavefront *W, wk_point o, wk_point u, uint32_t
         ** WK_RAY_RESHOOT_NEAR * eps_d) count: the question is which of them
         ** the ray enters, and a fast vertex elsewhere may sweep its piece
         ** across the ray in the delay (tolerance.h) */
-        double later = t + WK_RAY_RESHOOT_DELAY * wk_wf_eps_t(W);
+        double later = t + reshoot_delay(W, o, u, v, a, t, lambda0, bl);
         wk_point pv = wk_wf_position(W, v, later);
         double l1 = (pv.x - o.x) * u.x + (pv.y - o.y) * u.y;
         ray_near near = {{o.x + bl * u.x, o.y + bl * u.y}, t, WK_RAY_RESHOOT_NEAR * wk_wf_eps_d(W)};
