@@ -354,6 +354,37 @@ Test(motorcycle_graph, crash_bound_prunes_the_hub) {
     ASSERT_CLEAN_CLOSE(R);
 }
 
+/* Long traces on a refined grid (motorcycle_graph.c,
+** MCG_REFINED_LISTINGS_MAX): monotone 3*10^4 seed 1 has its origins on the
+** boundary, so the occupancy rule refines the grid, and traces about a
+** quarter of the box long, listed in ever more cells (r^1.5).  Past 40
+** listings per motorcycle the grid is dropped and the simulation starts
+** again unrefined: the same graph (a second build, the consistency check;
+** JSON identical to the refined grid's at 10^5, session mcmp) with a peak
+** of 32.5 MB of tracked bytes instead of 43.7 MB (10^5: 160 MB instead of
+** 400 MB).  Fails if the budget stops firing there. */
+Test(motorcycle_graph, long_traces_drop_the_refined_grid, .timeout = 300) {
+    wk_run R;
+    wk_run_init(&R);
+    wk_polygon *P = NULL;
+    cr_assert_eq(gen(&R, "monotone", 30000, -1, 1, NULL, &P), WK_OK);
+    size_t base = R.alloc.live;
+    wk_run_reset_peak(&R);
+    wk_motorcycle_graph *G = NULL, *H = NULL;
+    cr_assert_eq(wk_motorcycle_graph_build(&R, P, &G), WK_OK);
+    size_t peak = R.alloc.peak - base;
+    cr_assert_eq(G->n, 14999);
+    cr_assert_lt(peak, (size_t)38000000, "peak %zu bytes", peak);
+    char why[512];
+    cr_assert(wk_motorcycle_graph_check(G, P, why, sizeof why), "%s", why);
+    cr_assert_eq(wk_motorcycle_graph_build(&R, P, &H), WK_OK);
+    cr_assert(wk_motorcycle_graph_same(G, H, why, sizeof why), "rebuild: %s", why);
+    wk_motorcycle_graph_free(&R, H);
+    wk_motorcycle_graph_free(&R, G);
+    wk_polygon_free(&R, P);
+    ASSERT_CLEAN_CLOSE(R);
+}
+
 /* --------------------------------------------------------------- memory */
 
 Test(motorcycle_graph, every_allocation_failure_is_clean) {

@@ -58,6 +58,25 @@
 ** at 1, 89M at 16). */
 #define MCG_REFINE_OCCUPANCY 0.25
 #define MCG_REFINE_MAX 16.0
+/* ... unless the traces turn out long: a refined grid that has made this
+** many listings per motorcycle is dropped and the simulation starts again
+** on the unrefined one (refine 1; the graph is the grid's no matter its
+** size, only the work differs: the grid-vs-brute-force tests).  Clustered
+** origins with short traces (the coastline: 2.0 listings per motorcycle at
+** n = 10^5 on its grid 16 times finer) keep the fine grid; origins on a
+** curve with traces across the box (monotone: mean trace about a quarter
+** of the box, listings r^1.5: 31, 100 and 172 per motorcycle at 10^4,
+** 10^5 and 3*10^5, 2.1 GB for M(P) alone at 3*10^5 and 11 GB at 10^6)
+** pay at most this many for the try.  Measured (session mcmp, CPU of M(P)
+** alone, monotone seed 1, load 10-15): 10^5 refine 16: 5.0M listings,
+** 3.3 s, 400 MB; refine 1: 1.3M, 2.4 s, 120 MB; 3*10^5 refine 16: 25.9M,
+** 28.4 s, 2.07 GB; refine 1: 6.6M, 16.1 s, 558 MB (0.03 and 0.01 cells per
+** motorcycle: 3.7M and 2.2M listings but 56M and 120M pair tests, 21 and
+** 48 s).  Not lower: a try costs up to this many listings' work (at 16,
+** monotone 10^4 restarted and took 0.08 s instead of 0.05 s, and notched
+** 10^4, 35 listings per motorcycle in a hub where pair tests dominate,
+** restarted near its end and peaked 40% higher). */
+#define MCG_REFINED_LISTINGS_MAX 40.0
 /* Spread origins (an occupancy of at least MCG_REFINE_OCCUPANCY on a grid
 ** of one cell per motorcycle, the rule's first calibration: star and
 ** random, 0.34) get this coarser grid instead.  Their needle notches send
@@ -225,6 +244,9 @@ typedef struct sim {
     geo *geo;              /* r */
     double *clen;          /* r: geo[i].clen, compact (short_skip) */
     uint64_t n_listed;
+    uint64_t max_listed;   /* a refined grid's budget (MCG_REFINED_LISTINGS_MAX),
+                              else UINT64_MAX */
+    bool over_budget;      /* the refined grid passed it: start again */
     uint32_t *slab;        /* r: next slab along the major axis */
     uint32_t *slab_end;    /* r: last slab (inclusive) */
 } sim;
@@ -922,7 +944,7 @@ static wk_status process_registration(sim *S, uint32_t i) {
         double ccx, ccy;
         cell_centre(S, cell, &ccx, &ccy);
         L->e[L->n++] = listing(gi, ccx, ccy);
-        S->n_listed++;
+        if (++S->n_listed > S->max_listed) S->over_budget = true;
         if (L->ix && index_add(S, L, L->n - 1) != WK_OK) return WK_ENOMEM;
         if (L->n >= MCG_INDEX_MIN && L->n >= 2 * (L->ix ? L->ix->built : 0) &&
             index_build(S, L, cell) != WK_OK)
@@ -972,17 +994,21 @@ static wk_status origin_occupancy(sim *S, wk_point lo, double W, double H, doubl
 /* The grid over the box [lo, hi] (relative coordinates, containing every
 ** bounding segment), the cursors, and every motorcycle's first
 ** registration. */
-static wk_status grid_start(sim *S, wk_point lo, wk_point hi) {
+static wk_status grid_start(sim *S, wk_point lo, wk_point hi, bool may_refine) {
     double d = S->delta;
     double W = hi.x - lo.x + 2.0 * d, H = hi.y - lo.y + 2.0 * d;
     double target = MCG_CELLS_PER_MOTORCYCLE * (double)S->r;
     double refine, f1, f;
+    S->max_listed = UINT64_MAX;
+    S->over_budget = false;
+    S->n_listed = 0;
     if (origin_occupancy(S, lo, W, H, (double)S->r, &refine, &f1) != WK_OK) return WK_ENOMEM;
     if (f1 >= MCG_REFINE_OCCUPANCY) {
         target = MCG_CELLS_PER_MOTORCYCLE_SPREAD * (double)S->r;
-    } else {
+    } else if (may_refine) {
         if (origin_occupancy(S, lo, W, H, target, &refine, &f) != WK_OK) return WK_ENOMEM;
         target *= refine;
+        if (refine > 1.0) S->max_listed = (uint64_t)(MCG_REFINED_LISTINGS_MAX * (double)S->r);
     }
     if (target < 1.0) target = 1.0;
     double cell = sqrt(W * H / target);
@@ -1036,14 +1062,37 @@ static wk_status brute_start(sim *S) {
     return WK_OK;
 }
 
+/* The events in order; stops early (with S->over_budget) when a refined
+** grid passes its listing budget. */
 static wk_status run_events(sim *S) {
-    while (S->H.size > 0) {
+    while (S->H.size > 0 && !S->over_budget) {
         mev e = heap_pop(&S->H);
         wk_status st =
             e.b == WK_NONE ? process_registration(S, e.a) : process_crossing(S, e.a, e.b);
         if (st != WK_OK) return st;
     }
     return WK_OK;
+}
+
+/* The grid's part of the state (cells, copies, cursors). */
+static void grid_clear(sim *S) {
+    wk_run *R = S->R;
+    if (S->cells) {
+        size_t cells = (size_t)S->nc[0] * S->nc[1];
+        for (size_t c = 0; c < cells; c++) {
+            WK_FREE_ARRAY(R, S->cells[c].e, S->cells[c].cap);
+            index_free(R, S->cells[c].ix);
+        }
+        WK_FREE_ARRAY(R, S->cells, cells);
+        S->cells = NULL;
+    }
+    WK_FREE_ARRAY(R, S->geo, S->r);
+    WK_FREE_ARRAY(R, S->clen, S->r);
+    WK_FREE_ARRAY(R, S->slab, S->r);
+    WK_FREE_ARRAY(R, S->slab_end, S->r);
+    S->geo = NULL;
+    S->clen = NULL;
+    S->slab = S->slab_end = NULL;
 }
 
 static void sim_clear(sim *S) {
@@ -1053,18 +1102,26 @@ static void sim_clear(sim *S) {
     WK_FREE_ARRAY(R, S->next_member, S->r);
     WK_FREE_ARRAY(R, S->groups, S->cap_groups);
     WK_FREE_ARRAY(R, S->H.e, S->H.cap);
-    if (S->cells) {
-        size_t cells = (size_t)S->nc[0] * S->nc[1];
-        for (size_t c = 0; c < cells; c++) {
-            WK_FREE_ARRAY(R, S->cells[c].e, S->cells[c].cap);
-            index_free(R, S->cells[c].ix);
-        }
-        WK_FREE_ARRAY(R, S->cells, cells);
+    grid_clear(S);
+}
+
+/* Back to the state before the first event (the refined grid passed its
+** budget): every motorcycle alive with its wall crash (shoot_all's
+** record), no group, no event, no grid; the pairs tested stay counted. */
+static void sim_restart(sim *S) {
+    grid_clear(S);
+    S->H.size = 0;
+    S->n_groups = 0;
+    for (uint32_t i = 0; i < S->r; i++) {
+        wk_motorcycle *m = &S->m[i];
+        S->crashed[i] = 0;
+        S->grp[i] = S->next_member[i] = WK_NONE;
+        m->len = m->wall_len;
+        m->kind = WK_MCG_WALL;
+        m->other = WK_NONE;
+        m->other_len = 0.0;
+        m->group = WK_NONE;
     }
-    WK_FREE_ARRAY(R, S->geo, S->r);
-    WK_FREE_ARRAY(R, S->clen, S->r);
-    WK_FREE_ARRAY(R, S->slab, S->r);
-    WK_FREE_ARRAY(R, S->slab_end, S->r);
 }
 
 /* ============================================================ the rays */
@@ -1426,9 +1483,14 @@ static wk_status build(wk_run *R, const wk_polygon *P, bool use_grid, wk_motorcy
     if (!S.crashed || !S.grp || !S.next_member) goto fail;
     for (uint32_t i = 0; i < r; i++) S.grp[i] = S.next_member[i] = WK_NONE;
     if (r > 0) {
-        st = use_grid ? grid_start(&S, lo, hi) : brute_start(&S);
+        st = use_grid ? grid_start(&S, lo, hi, true) : brute_start(&S);
         if (st != WK_OK) goto fail;
         if ((st = run_events(&S)) != WK_OK) goto fail;
+        if (S.over_budget) {
+            sim_restart(&S);
+            if ((st = grid_start(&S, lo, hi, false)) != WK_OK) goto fail;
+            if ((st = run_events(&S)) != WK_OK) goto fail;
+        }
     }
     if ((st = finish(&S, G)) != WK_OK) goto fail;
     sim_clear(&S);

@@ -87,7 +87,10 @@
 ** then a time-ordered simulation over a uniform grid of about one cell per
 ** ten motorcycles (up to 16 times more when the origins are clustered, see
 ** MCG_CELLS_PER_MOTORCYCLE and MCG_REFINE_OCCUPANCY in the .c; 0.03 per
-** motorcycle when they are spread, MCG_CELLS_PER_MOTORCYCLE_SPREAD): each motorcycle lists itself in the cells within
+** motorcycle when they are spread, MCG_CELLS_PER_MOTORCYCLE_SPREAD; a
+** refined grid that makes more than 40 listings per motorcycle (long
+** traces across the box) is dropped and the simulation starts again unrefined,
+** MCG_REFINED_LISTINGS_MAX): each motorcycle lists itself in the cells within
 ** WK_MCG_GRID_DELTA * eps_d of its bounding segment, slab by slab along the
 ** segment's major axis, each slab at the time it comes within that distance
 ** (a registration event in the same heap); a motorcycle that has crashed
@@ -209,7 +212,8 @@ typedef struct wk_motorcycle_stats {
     uint64_t trace_crashes;
     uint64_t simultaneous_groups;
     uint64_t simultaneous_motorcycles; /* members over all groups */
-    uint64_t candidate_pairs;          /* pairs whose crossing was computed */
+    uint64_t candidate_pairs;          /* pairs whose crossing was computed
+                                          (over both runs after a restart) */
 } wk_motorcycle_stats;
 
 typedef struct wk_motorcycle_graph {
