@@ -501,7 +501,15 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
 }
 
 /* The event's configuration at te: a collapsing piece no longer than eps_c,
-** a vertex within eps_c of the piece's line. */
+** a vertex within eps_c of the piece's line and of its extent (within eps_c
+** of its ends along the line).  The extent matters for a fast vertex moving
+** nearly along the piece's line: the tip of a spike 5e6 long beside an edge
+** 4e-7 rad from its side (tests/data/fuzz/mismatch_deforming_cross_far_vertex_5e6.wpoly)
+** is within eps_c of that edge's line all the way down the spike and
+** reaches the piece's start 3.6e-6 (eps_t 5e-3) after it ends 18 units
+** away where the spike closes; grouped, the piece's start vertex ended
+** at the spike's node (faces 2, 4, 5 there, where naive and CGAL have
+** that vertex cut edge 2 at t = 1.895). */
 static bool met_at(const df_state *D, const df_event *E, double te, double eps_c) {
     const df_vertex *A = &D->v[E->kind == DF_COLLAPSE ? E->a : E->b];
     const df_vertex *B = &D->v[A->next];
@@ -510,7 +518,11 @@ static bool met_at(const df_state *D, const df_event *E, double te, double eps_c
         wk_point pa = df_pos(A, te), pb = df_pos(B, te);
         return L->ux * (pb.x - pa.x) + L->uy * (pb.y - pa.y) <= eps_c;
     }
-    return fabs(wk_offset_distance(L, df_pos(&D->v[E->a], te), te)) <= eps_c;
+    wk_point x = df_pos(&D->v[E->a], te), pa = df_pos(A, te), pb = df_pos(B, te);
+    if (!(fabs(wk_offset_distance(L, x, te)) <= eps_c)) return false;
+    double sa = L->ux * (x.x - pa.x) + L->uy * (x.y - pa.y);
+    double sb = L->ux * (pb.x - x.x) + L->uy * (pb.y - x.y);
+    return sa >= -eps_c && sb >= -eps_c;
 }
 
 static int event_cmp(const df_event *x, const df_event *y) {
