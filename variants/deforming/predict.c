@@ -197,17 +197,19 @@ static double dist2(wk_point a, wk_point b) {
 ** only the ends of one edge (session deform11): a reflex input vertex
 ** within the contact distance of another (a pinch: the ring touches
 ** itself, or two holes touch) did not come out of one point either, and
-** skipped, its split at t = 0 was lost and the wavefront crossed itself
-** from the first step (ealgo_arrangement_pinch, vertices 1e-6 apart;
-** ub_deforming_nan_step, 1.4e-12; ealgo_holes_vertices_1e-10_apart;
+** skipped, its split at t = 0 was lost and (in six of these) the
+** wavefront crossed itself from the first step on
+** (ealgo_arrangement_pinch, vertices 1e-6 apart, eps_d 0.4;
+** ub_deforming_nan_step, 4e-12; ealgo_holes_vertices_1e-10_apart;
 ** mismatch_arrangement_motorcycle_holes_touching, 4.7e-6; and
 ** ealgo_arrangement_still_alive, invalid_naive_7gon_spikes_2e14,
 ** invalid_naive_h_weight9_sliver_cycle in tests/data/fuzz: each went to
 ** the reference, rays side by side or a vertex alive too long; now each
 ** equals naive).  Between rings the side rule (contact below) still
-** decides which piece at w it meets.  (Before the side rule, taking two
-** rings' vertices as met put a node of holes_touching where CGAL and
-** naive do not.) */
+** decides which piece at w it meets.  (Two rings' vertices were kept
+** together since birth because taking them as met put a node of
+** holes_touching where CGAL and naive do not; with the side rule it and
+** holes_vertices_1e-10_apart now equal CGAL.) */
 static bool together_since_birth(const df_state *D, uint32_t v, uint32_t w, double c2) {
     const df_vertex *V = &D->v[v], *W = &D->v[w];
     if (v < D->P->n && w < D->P->n && wk_is_reflex_turn(&D->L[V->ein], &D->L[V->eout]))
