@@ -193,14 +193,26 @@ static double dist2(wk_point a, wk_point b) {
 ** or straight vertex at the end of a tiny edge stays: there the edge
 ** collapses or grows by the motion of its ends (an edge swap, or none),
 ** again as in the engine.
-** Input vertices of two rings (holes nearly touching) keep the old rule:
-** taking them as met put a node where CGAL and naive do not
-** (tests/data/fuzz/mismatch_arrangement_motorcycle_holes_touching.wpoly). */
+** The same holds for any two input vertices, of one ring or of two, not
+** only the ends of one edge (session deform11): a reflex input vertex
+** within the contact distance of another (a pinch: the ring touches
+** itself, or two holes touch) did not come out of one point either, and
+** skipped, its split at t = 0 was lost and (in six of these) the
+** wavefront crossed itself from the first step on
+** (ealgo_arrangement_pinch, vertices 1e-6 apart, eps_d 0.4;
+** ub_deforming_nan_step, 4e-12; ealgo_holes_vertices_1e-10_apart;
+** mismatch_arrangement_motorcycle_holes_touching, 4.7e-6; and
+** ealgo_arrangement_still_alive, invalid_naive_7gon_spikes_2e14,
+** invalid_naive_h_weight9_sliver_cycle in tests/data/fuzz: each went to
+** the reference, rays side by side or a vertex alive too long; now each
+** equals naive).  Between rings the side rule (contact below) still
+** decides which piece at w it meets.  (Two rings' vertices were kept
+** together since birth because taking them as met put a node of
+** holes_touching where CGAL and naive do not; with the side rule it and
+** holes_vertices_1e-10_apart now equal CGAL.) */
 static bool together_since_birth(const df_state *D, uint32_t v, uint32_t w, double c2) {
     const df_vertex *V = &D->v[v], *W = &D->v[w];
-    if (v < D->P->n && w < D->P->n &&
-        (wk_polygon_next(D->P, v) == w || wk_polygon_prev(D->P, v) == w) &&
-        wk_is_reflex_turn(&D->L[V->ein], &D->L[V->eout]))
+    if (v < D->P->n && w < D->P->n && wk_is_reflex_turn(&D->L[V->ein], &D->L[V->eout]))
         return false;
     double tb = V->t0 > W->t0 ? V->t0 : W->t0;
     return dist2(df_pos(V, tb), df_pos(W, tb)) <= c2;
@@ -501,7 +513,15 @@ static wk_status test_penetration(df_state *D, uint32_t p, uint32_t a, double t,
 }
 
 /* The event's configuration at te: a collapsing piece no longer than eps_c,
-** a vertex within eps_c of the piece's line. */
+** a vertex within eps_c of the piece's line and of its extent (within eps_c
+** of its ends along the line).  The extent matters for a fast vertex moving
+** nearly along the piece's line: the tip of a spike 5e6 long beside an edge
+** 4e-7 rad from its side (tests/data/fuzz/mismatch_deforming_cross_far_vertex_5e6.wpoly)
+** is within eps_c of that edge's line all the way down the spike and
+** reaches the piece's start 3.6e-6 (eps_t 5e-3) after it ends 18 units
+** away where the spike closes; grouped, the piece's start vertex ended
+** at the spike's node (faces 2, 4, 5 there, where naive and CGAL have
+** that vertex cut edge 2 at t = 1.895). */
 static bool met_at(const df_state *D, const df_event *E, double te, double eps_c) {
     const df_vertex *A = &D->v[E->kind == DF_COLLAPSE ? E->a : E->b];
     const df_vertex *B = &D->v[A->next];
@@ -510,7 +530,11 @@ static bool met_at(const df_state *D, const df_event *E, double te, double eps_c
         wk_point pa = df_pos(A, te), pb = df_pos(B, te);
         return L->ux * (pb.x - pa.x) + L->uy * (pb.y - pa.y) <= eps_c;
     }
-    return fabs(wk_offset_distance(L, df_pos(&D->v[E->a], te), te)) <= eps_c;
+    wk_point x = df_pos(&D->v[E->a], te), pa = df_pos(A, te), pb = df_pos(B, te);
+    if (!(fabs(wk_offset_distance(L, x, te)) <= eps_c)) return false;
+    double sa = L->ux * (x.x - pa.x) + L->uy * (x.y - pa.y);
+    double sb = L->ux * (pb.x - x.x) + L->uy * (pb.y - x.y);
+    return sa >= -eps_c && sb >= -eps_c;
 }
 
 static int event_cmp(const df_event *x, const df_event *y) {

@@ -732,6 +732,20 @@ static wk_status shield_slow_stretch(df_state *D, uint32_t k, wk_point q, uint32
     return WK_OK;
 }
 
+/* True if vertex p has a penetration in the group of each piece that ends
+** at x (x -> next(x) and prev(x) -> x): p meets x itself, vertex on
+** vertex, whatever the stretch between them does (see plan_slow_stretches). */
+static bool meets_both_pieces_at(const df_state *D, uint32_t p, uint32_t x) {
+    bool before = false, after = false;
+    for (uint32_t i = 0; i < D->n_ev; i++) {
+        const df_event *E = &D->ev[i];
+        if (E->kind != DF_PENETRATION || E->a != p) continue;
+        after |= E->b == x;
+        before |= D->v[E->b].next == x;
+    }
+    return before && after;
+}
+
 /* Step 0, slow stretches: the engine's rule (plan_slow_stretches in
 ** engine/wavefront_group.c; see there).  At an event point with one seed
 ** (events that land outside their piece, echoes, not counted) a vertex x
@@ -785,10 +799,20 @@ static wk_status plan_slow_stretches(df_state *D, double te, double eps_c) {
             /* s cuts the piece a -> b of line l: a -> (l, s.eout) -> s.next
             ** and s.prev -> (s.ein, l) -> b */
             uint32_t a = E->b, b = D->v[a].next, l = D->v[a].eout;
-            if ((st = shield_slow_stretch(D, k, q, a, l, l, V->eout, false, te, eps_c)) != WK_OK ||
+            /* An end of the piece that the vertex also penetrates the other
+            ** piece of (the echo at that end) is met head-on: a needle's tip
+            ** (speed 1e6, eps_d 1e-3) reaching a convex vertex 5e-6 from
+            ** the point of its penetration of the vertex's one piece and an
+            ** echo at the other; shielded, that vertex stayed alive beside
+            ** the point, its pieces' parts 4.7e-6 long sorted by direction,
+            ** and two pieces left the point side by side (the reference;
+            ** tests/data/fuzz/needle_vertex_beyond_edge.wpoly, session
+            ** deform11). */
+            bool head_a = meets_both_pieces_at(D, E->a, a), head_b = meets_both_pieces_at(D, E->a, b);
+            if ((!head_a && (st = shield_slow_stretch(D, k, q, a, l, l, V->eout, false, te, eps_c)) != WK_OK) ||
                 (st = shield_slow_stretch(D, k, q, V->next, V->eout, l, V->eout, true, te, eps_c)) !=
                     WK_OK ||
-                (st = shield_slow_stretch(D, k, q, b, l, V->ein, l, true, te, eps_c)) != WK_OK ||
+                (!head_b && (st = shield_slow_stretch(D, k, q, b, l, V->ein, l, true, te, eps_c)) != WK_OK) ||
                 (st = shield_slow_stretch(D, k, q, V->prev, V->ein, V->ein, l, false, te, eps_c)) !=
                     WK_OK)
                 return st;
