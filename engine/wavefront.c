@@ -941,6 +941,9 @@ done:
     WK_FREE_ARRAY(R, W.run_node, W.cap_run_node);
     WK_FREE_ARRAY(R, W.dead, W.cap_dead);
     WK_FREE_ARRAY(R, W.shield, W.cap_shield);
+    WK_FREE_ARRAY(R, W.shield_ix, W.cap_shield_ix);
+    WK_FREE_ARRAY(R, W.shield_older, W.cap_shield_older);
+    WK_FREE_ARRAY(R, W.pin_ix, W.cap_pin_ix);
     WK_FREE_ARRAY(R, W.deferred, W.cap_deferred);
     wk_point_grid_free(R, &W.cg);
     wk_point_grid_free(R, &W.vg);
