@@ -265,7 +265,10 @@ static mc_cross next_down(const mc_seg *S, double lam, uint32_t after) {
 
 static wk_status ensure_vertex_arrays(mc_state *A, uint32_t nv) {
     if (nv <= A->cap_v) return WK_OK;
-    uint32_t ncap = A->cap_v ? A->cap_v : 64;
+    /* first: room for the 2n - 3 wavefront vertices of n input vertices in
+    ** general position (the engine's reservation, wavefront.c), so these
+    ** arrays do not double past it */
+    uint32_t ncap = A->cap_v ? A->cap_v : nv < UINT32_MAX / 4 ? 2 * nv + 16 : nv;
     while (ncap < nv) ncap *= 2;
     uint32_t *so = WK_NEW_ARRAY(A->R, uint32_t, ncap);
     uint32_t *fh = so ? WK_NEW_ARRAY(A->R, uint32_t, ncap) : NULL;
@@ -1334,7 +1337,7 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
 static double mc_next_time(void *ud) {
     mc_state *A = ud;
     if (!A->Q.size) return INFINITY;
-    return A->Q.key[wk_event_queue_peek(&A->Q)].time;
+    return wk_event_queue_time(&A->Q, wk_event_queue_peek(&A->Q));
 }
 
 static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t);
