@@ -46,10 +46,14 @@ void wk_event_queue_init(wk_event_queue *Q) {
 
 wk_status wk_event_queue_reserve(wk_run *R, wk_event_queue *Q, uint32_t cap) {
     if (cap <= Q->cap) return WK_OK;
-    /* the first reservation is exact (callers reserve what they know they
-    ** need: one id per wavefront vertex), later ones double */
-    uint32_t ncap = Q->cap ? Q->cap : cap;
-    while (ncap < cap) ncap = ncap > UINT32_MAX / 2 ? cap : ncap * 2;
+    /* the first reservation is exact (callers reserve what they expect to
+    ** need: one id per wavefront vertex, 2n + 16); later ones take the power
+    ** of two that doubling from 16 gives, never more than before */
+    uint32_t ncap = cap;
+    if (Q->cap) {
+        ncap = 16;
+        while (ncap < cap || ncap <= Q->cap) ncap = ncap > UINT32_MAX / 2 ? cap : ncap * 2;
+    }
     /* Allocate both before touching Q, so a failure leaves Q intact. */
     wk_event_entry *heap = WK_NEW_ARRAY(R, wk_event_entry, ncap);
     uint32_t *pos = heap ? WK_NEW_ARRAY(R, uint32_t, ncap) : NULL;

@@ -39,9 +39,16 @@
 
 /* ------------------------------------------------------------ vertices */
 
+/* The vertex array grows by doubling but stops at 2n + 16 first
+** (WK_GROW_HINT): n input vertices in general position make 2n - 3
+** wavefront vertices, one per arc (simultaneous events make fewer, holes
+** may make more).  Doubling alone left up to half of it empty: star
+** 3*10^5 (599,997 vertices of 120 bytes in a capacity of 2^20) held 1,113
+** tracked bytes per input vertex at its peak.  The skeleton's nodes and
+** arcs likewise (wk_skeleton.cap_hint). */
 uint32_t wf_new_vertex(wk_wavefront *W, uint32_t ein, uint32_t eout, wk_point p, double t,
                        uint32_t node) {
-    if (WK_GROW(W->R, W->v, W->cap_v, W->nv + 1) != WK_OK) return WK_NONE;
+    if (WK_GROW_HINT(W->R, W->v, W->cap_v, W->nv + 1, wf_size_hint(W)) != WK_OK) return WK_NONE;
     uint32_t id = W->nv++;
     wk_wf_vertex *x = &W->v[id];
     memset(x, 0, sizeof *x);
@@ -782,39 +789,6 @@ static wk_status process_group(wk_wavefront *W, double t) {
     return R->opt.check_invariants ? check_invariants(W) : WK_OK;
 }
 
-/* Grow *pp (capacity *cap) to exactly `want` elements if it holds fewer. */
-static wk_status reserve_exact(wk_run *R, void **pp, uint32_t *cap, uint32_t want, size_t elem) {
-    if (*cap >= want) return WK_OK;
-    void *q = wk_realloc(R, *pp, (size_t)*cap * elem, (size_t)want * elem);
-    if (!q) return R->err.code;
-    *pp = q;
-    *cap = want;
-    return WK_OK;
-}
-
-/* The arrays that grow by one per wavefront vertex or skeleton node start
-** at WF_RESERVE(n) elements: a polygon of n vertices in general position
-** makes 2n - 3 wavefront vertices (one per arc), 2n - 2 nodes and 2n - 3
-** arcs (simultaneous events make fewer; holes may make more, and the arrays
-** then double as before).  Doubling from the n input vertices left up to
-** half of the largest of them empty: star 3*10^5 (599,997 vertices of 120
-** bytes in a capacity of 2^20) held 1,113 tracked bytes per input vertex
-** at its peak.  The skeleton's nodes and arcs likewise. */
-#define WF_RESERVE(n) (2 * (uint32_t)(n) + 16)
-
-static wk_status reserve_run_arrays(wk_wavefront *W) {
-    wk_run *R = W->R;
-    uint32_t want = WF_RESERVE(W->P->n);
-    void *v = W->v, *nodes = W->S->nodes, *arcs = W->S->arcs;
-    wk_status st = reserve_exact(R, &v, &W->cap_v, want, sizeof *W->v);
-    W->v = v;
-    if (st == WK_OK) st = reserve_exact(R, &nodes, &W->S->cap_nodes, want, sizeof *W->S->nodes);
-    W->S->nodes = nodes;
-    if (st == WK_OK) st = reserve_exact(R, &arcs, &W->S->cap_arcs, want, sizeof *W->S->arcs);
-    W->S->arcs = arcs;
-    return st;
-}
-
 static wk_status simulate(wk_wavefront *W) {
     wk_run *R = W->R;
     const wk_polygon *P = W->P;
@@ -838,10 +812,6 @@ static wk_status simulate(wk_wavefront *W) {
     }
     if (wk_event_queue_reserve(R, &W->Q, 2 * n + 16) != WK_OK) return R->err.code;
     if (W->finder->start && W->finder->start(W->finder_ud, W) != WK_OK) return R->err.code;
-    /* after the finder's start, whose scratch (a motorcycle graph) is gone
-    ** by then: reserved before it, the arrays added to its peak (star
-    ** 1,000: 27% more tracked bytes) */
-    if (n < UINT32_MAX / 4 && reserve_run_arrays(W) != WK_OK) return R->err.code;
     for (uint32_t i = 0; i < W->nv; i++) {
         if (!W->v[i].alive) continue;
         full_candidate(W, i);
@@ -956,6 +926,7 @@ wk_status wk_wavefront_run(wk_run *R, const wk_polygon *P, const wk_split_finder
     W.origin = wk_polygon_centre(P);
     for (uint32_t i = 0; i < P->n; i++) wk_offset_line_of_edge_at(P, i, W.origin, &W.L[i]);
     if ((st = wk_skeleton_new(R, P, &W.S)) != WK_OK) goto done;
+    W.S->cap_hint = wf_size_hint(&W);
     if (P->pslg && (st = wf_check_horizon(&W)) != WK_OK) goto done;
     st = simulate(&W);
     if (st == WK_OK) st = wk_skeleton_merge_pass_through(R, W.S);

@@ -147,6 +147,12 @@ struct wk_wavefront {
     void *finder_ud;
 };
 
+/* The likely final size of the arrays that grow by one per wavefront
+** vertex or skeleton node (WK_GROW_HINT): 2n + 16. */
+static inline uint32_t wf_size_hint(const wk_wavefront *W) {
+    return W->P->n < UINT32_MAX / 4 ? 2 * W->P->n + 16 : 0;
+}
+
 /* Position of vertex V at time t (relative to W->origin). */
 static inline wk_point wk_wf_pos(const wk_wf_vertex *V, double t) {
     double dt = t - V->t0;
