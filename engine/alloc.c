@@ -224,6 +224,24 @@ void *wk_grow_ptr(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_
     return q;
 }
 
+void *wk_grow_ptr_hint(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_size,
+                       uint32_t hint) {
+    if (need <= *cap && p) return p;
+    uint64_t ncap = 8;
+    while (ncap < need || ncap < *cap) ncap *= 2;
+    if (hint && need <= hint && hint < ncap && hint >= *cap) ncap = hint;
+    if (ncap > UINT32_MAX - 1) ncap = UINT32_MAX - 1;
+    if (ncap < need || (elem_size && ncap > SIZE_MAX / elem_size)) {
+        WK_FAIL(R, WK_ENOMEM, NULL, 0, "array of %u elements of %zu bytes too large", need,
+                elem_size);
+        return p;
+    }
+    void *q = wk_realloc(R, p, p ? (size_t)*cap * elem_size : 0, (size_t)ncap * elem_size);
+    if (!q) return p;
+    *cap = (uint32_t)ncap;
+    return q;
+}
+
 wk_status wk_grow(wk_run *R, void **pp, uint32_t *cap, uint32_t need, size_t elem_size) {
     *pp = wk_grow_ptr(R, *pp, cap, need, elem_size);
     return *pp && *cap >= need ? WK_OK : WK_ENOMEM;

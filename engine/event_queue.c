@@ -3,70 +3,71 @@
 */
 #include "event_queue.h"
 
-static bool less(const wk_event_queue *Q, uint32_t a, uint32_t b) {
-    const wk_event_key *ka = &Q->key[a], *kb = &Q->key[b];
-    if (ka->time != kb->time) return ka->time < kb->time;
-    if (ka->kind != kb->kind) return ka->kind < kb->kind;
-    return a < b;
+static bool less(const wk_event_entry *a, const wk_event_entry *b) {
+    if (a->time != b->time) return a->time < b->time;
+    if (a->kind != b->kind) return a->kind < b->kind;
+    return a->id < b->id;
 }
 
-static void place(wk_event_queue *Q, uint32_t i, uint32_t id) {
-    Q->heap[i] = id;
-    Q->pos[id] = i;
+static void place(wk_event_queue *Q, uint32_t i, wk_event_entry e) {
+    Q->heap[i] = e;
+    Q->pos[e.id] = i;
 }
 
 static void sift_up(wk_event_queue *Q, uint32_t i) {
-    uint32_t id = Q->heap[i];
+    wk_event_entry e = Q->heap[i];
     while (i > 0) {
         uint32_t p = (i - 1) / 2;
-        if (!less(Q, id, Q->heap[p])) break;
+        if (!less(&e, &Q->heap[p])) break;
         place(Q, i, Q->heap[p]);
         i = p;
     }
-    place(Q, i, id);
+    place(Q, i, e);
 }
 
 static void sift_down(wk_event_queue *Q, uint32_t i) {
-    uint32_t id = Q->heap[i];
+    wk_event_entry e = Q->heap[i];
     for (;;) {
         uint32_t c = 2 * i + 1;
         if (c >= Q->size) break;
-        if (c + 1 < Q->size && less(Q, Q->heap[c + 1], Q->heap[c])) c++;
-        if (!less(Q, Q->heap[c], id)) break;
+        if (c + 1 < Q->size && less(&Q->heap[c + 1], &Q->heap[c])) c++;
+        if (!less(&Q->heap[c], &e)) break;
         place(Q, i, Q->heap[c]);
         i = c;
     }
-    place(Q, i, id);
+    place(Q, i, e);
 }
 
 void wk_event_queue_init(wk_event_queue *Q) {
     Q->size = Q->cap = 0;
-    Q->heap = Q->pos = NULL;
-    Q->key = NULL;
+    Q->heap = NULL;
+    Q->pos = NULL;
 }
 
 wk_status wk_event_queue_reserve(wk_run *R, wk_event_queue *Q, uint32_t cap) {
     if (cap <= Q->cap) return WK_OK;
-    uint32_t ncap = Q->cap ? Q->cap : 16;
-    while (ncap < cap) ncap = ncap > UINT32_MAX / 2 ? cap : ncap * 2;
-    /* Allocate all three before touching Q, so a failure leaves Q intact. */
-    uint32_t *heap = WK_NEW_ARRAY(R, uint32_t, ncap);
+    /* the first reservation is exact (callers reserve what they expect to
+    ** need: one id per wavefront vertex, 2n + 16); later ones take the power
+    ** of two that doubling from 16 gives, never more than before */
+    uint32_t ncap = cap;
+    if (Q->cap) {
+        ncap = 16;
+        while (ncap < cap || ncap <= Q->cap) ncap = ncap > UINT32_MAX / 2 ? cap : ncap * 2;
+    }
+    /* Allocate both before touching Q, so a failure leaves Q intact. */
+    wk_event_entry *heap = WK_NEW_ARRAY(R, wk_event_entry, ncap);
     uint32_t *pos = heap ? WK_NEW_ARRAY(R, uint32_t, ncap) : NULL;
-    wk_event_key *key = pos ? WK_NEW_ARRAY(R, wk_event_key, ncap) : NULL;
-    if (!key) {
+    if (!pos) {
         if (heap) WK_FREE_ARRAY(R, heap, ncap);
-        if (pos) WK_FREE_ARRAY(R, pos, ncap);
         return R->err.code;
     }
     for (uint32_t i = 0; i < ncap; i++) pos[i] = i < Q->cap ? Q->pos[i] : WK_NONE;
     for (uint32_t i = 0; i < Q->size; i++) heap[i] = Q->heap[i];
-    for (uint32_t i = 0; i < Q->cap; i++) key[i] = Q->key[i];
     uint32_t size = Q->size;
     wk_event_queue_clear(R, Q);
     Q->size = size;
     Q->heap = heap;
     Q->pos = pos;
-    Q->key = key;
     Q->cap = ncap;
     return WK_OK;
 }
@@ -74,19 +75,19 @@ wk_status wk_event_queue_reserve(wk_run *R, wk_event_queue *Q, uint32_t cap) {
 void wk_event_queue_clear(wk_run *R, wk_event_queue *Q) {
     WK_FREE_ARRAY(R, Q->heap, Q->cap);
     WK_FREE_ARRAY(R, Q->pos, Q->cap);
-    WK_FREE_ARRAY(R, Q->key, Q->cap);
     Q->size = Q->cap = 0;
 }
 
 wk_status wk_event_queue_set(wk_run *R, wk_event_queue *Q, uint32_t id, wk_event_key k) {
     if (id >= Q->cap && wk_event_queue_reserve(R, Q, id + 1) != WK_OK) return R->err.code;
     uint32_t i = Q->pos[id];
-    Q->key[id] = k;
+    wk_event_entry e = {k.time, k.kind, id};
     if (i == WK_NONE) {
-        place(Q, Q->size++, id);
+        place(Q, Q->size++, e);
         sift_up(Q, Q->size - 1);
         wk_count(R, WK_COUNTER_queue_pushes, 1);
     } else {
+        Q->heap[i] = e;
         sift_up(Q, i);
         sift_down(Q, Q->pos[id]);
         wk_count(R, WK_COUNTER_queue_updates, 1);
@@ -100,19 +101,19 @@ void wk_event_queue_remove(wk_run *R, wk_event_queue *Q, uint32_t id) {
     Q->pos[id] = WK_NONE;
     Q->size--;
     if (i < Q->size) {
-        uint32_t moved = Q->heap[Q->size];
+        wk_event_entry moved = Q->heap[Q->size];
         place(Q, i, moved);
         sift_up(Q, i);
-        sift_down(Q, Q->pos[moved]);
+        sift_down(Q, Q->pos[moved.id]);
     }
     wk_count(R, WK_COUNTER_queue_removes, 1);
 }
 
-uint32_t wk_event_queue_peek(const wk_event_queue *Q) { return Q->size ? Q->heap[0] : WK_NONE; }
+uint32_t wk_event_queue_peek(const wk_event_queue *Q) { return Q->size ? Q->heap[0].id : WK_NONE; }
 
 uint32_t wk_event_queue_pop(wk_run *R, wk_event_queue *Q) {
     if (!Q->size) return WK_NONE;
-    uint32_t id = Q->heap[0];
+    uint32_t id = Q->heap[0].id;
     Q->pos[id] = WK_NONE;
     Q->size--;
     if (Q->size) {
@@ -129,8 +130,8 @@ bool wk_event_queue_contains(const wk_event_queue *Q, uint32_t id) {
 
 bool wk_event_queue_check(const wk_event_queue *Q) {
     for (uint32_t i = 0; i < Q->size; i++) {
-        if (Q->pos[Q->heap[i]] != i) return false;
-        if (i > 0 && less(Q, Q->heap[i], Q->heap[(i - 1) / 2])) return false;
+        if (Q->heap[i].id >= Q->cap || Q->pos[Q->heap[i].id] != i) return false;
+        if (i > 0 && less(&Q->heap[i], &Q->heap[(i - 1) / 2])) return false;
     }
     return true;
 }

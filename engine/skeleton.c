@@ -23,7 +23,7 @@ wk_status wk_skeleton_new(wk_run *R, const wk_polygon *P, wk_skeleton **out) {
 
 wk_status wk_skeleton_add_node(wk_run *R, wk_skeleton *S, double x, double y, double t,
                                uint32_t *id) {
-    if (WK_GROW(R, S->nodes, S->cap_nodes, S->n_nodes + 1) != WK_OK) return R->err.code;
+    if (WK_GROW_HINT(R, S->nodes, S->cap_nodes, S->n_nodes + 1, S->cap_hint) != WK_OK) return R->err.code;
     S->nodes[S->n_nodes] = (wk_node){x, y, t};
     *id = S->n_nodes++;
     return WK_OK;
@@ -31,7 +31,7 @@ wk_status wk_skeleton_add_node(wk_run *R, wk_skeleton *S, double x, double y, do
 
 wk_status wk_skeleton_add_arc(wk_run *R, wk_skeleton *S, uint32_t a, uint32_t b, uint32_t left,
                               uint32_t right) {
-    if (WK_GROW(R, S->arcs, S->cap_arcs, S->n_arcs + 1) != WK_OK) return R->err.code;
+    if (WK_GROW_HINT(R, S->arcs, S->cap_arcs, S->n_arcs + 1, S->cap_hint) != WK_OK) return R->err.code;
     S->arcs[S->n_arcs++] = (wk_arc){a, b, left, right};
     return WK_OK;
 }

@@ -599,7 +599,64 @@ static wk_status plan_nodes(wk_wavefront *W, double t) {
 /* The shield of vertex u against node k: the piece it belongs to that the
 ** node cuts instead (WK_NONE: not shielded).  A forced vertex is a node of
 ** its own and is never shielded. */
+/* From WF_INDEX_MIN shields on they are hashed by vertex (W->shield_ix):
+** shield_of scanned them all for each vertex it was asked about
+** (plan_arrivals asks for nearly every vertex of the plan, plan_pinches,
+** plan_seed_cuts and shield_slow_stretch for piece ends), and the slow
+** stretches give up to four shields per seed, so a group of k seeds that
+** plans whole cycles of m vertices cost O(k m): rectilinear 10^6, where
+** groups with forced vertices plan whole cycles, spent a quarter of its run
+** in those scans (perf).  The index answers what the scan did: the oldest
+** shield of u with node k (its chain runs from the newest to the oldest,
+** and the last match wins). */
+enum { WF_INDEX_MIN = 16 };
+
+static uint32_t hash_slot(uint32_t key, uint32_t size) {
+    return (uint32_t)(((uint64_t)(key * 2654435761u) * size) >> 32);
+}
+
+static uint32_t shield_slot(const wk_wavefront *W, uint32_t u) {
+    uint32_t h = hash_slot(u, W->n_shield_ix);
+    while (W->shield_ix[h] != WK_NONE && W->shield[W->shield_ix[h]].vertex != u)
+        h = h + 1 == W->n_shield_ix ? 0 : h + 1;
+    return h;
+}
+
+static void shield_index_add(wk_wavefront *W, uint32_t i) {
+    uint32_t h = shield_slot(W, W->shield[i].vertex);
+    W->shield_older[i] = W->shield_ix[h];
+    W->shield_ix[h] = i;
+}
+
+/* Append shield (x, k, piece); the index follows from WF_INDEX_MIN shields
+** on, at a load of at most a half (rebuilt at twice the size beyond). */
+static wk_status add_shield(wk_wavefront *W, uint32_t x, uint32_t k, uint32_t piece) {
+    wk_run *R = W->R;
+    if (WK_GROW(R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return R->err.code;
+    W->shield[W->n_shield++] = (wk_wf_shield){x, k, piece};
+    if (W->n_shield < WF_INDEX_MIN) return WK_OK;
+    if (WK_GROW(R, W->shield_older, W->cap_shield_older, W->n_shield) != WK_OK) return R->err.code;
+    if (W->n_shield_ix && 2 * W->n_shield <= W->n_shield_ix) {
+        shield_index_add(W, W->n_shield - 1);
+        return WK_OK;
+    }
+    uint32_t size = 64;
+    while (size < 4 * W->n_shield) size *= 2;
+    W->n_shield_ix = 0;
+    if (WK_GROW(R, W->shield_ix, W->cap_shield_ix, size) != WK_OK) return R->err.code;
+    for (uint32_t h = 0; h < size; h++) W->shield_ix[h] = WK_NONE;
+    W->n_shield_ix = size;
+    for (uint32_t i = 0; i < W->n_shield; i++) shield_index_add(W, i);
+    return WK_OK;
+}
+
 static const wk_wf_shield *shield_of(const wk_wavefront *W, uint32_t u, uint32_t k) {
+    if (W->n_shield_ix) {
+        const wk_wf_shield *found = NULL;
+        for (uint32_t i = W->shield_ix[shield_slot(W, u)]; i != WK_NONE; i = W->shield_older[i])
+            if (W->shield[i].node == k) found = &W->shield[i];
+        return found;
+    }
     for (uint32_t i = 0; i < W->n_shield; i++)
         if (W->shield[i].vertex == u && W->shield[i].node == k) return &W->shield[i];
     return NULL;
@@ -627,7 +684,7 @@ static const wk_wf_shield *shield_of(const wk_wavefront *W, uint32_t u, uint32_t
 ** that shrinks to an edge event at once) the tolerance picture stays. */
 static wk_status plan_shields(wk_wavefront *W, double t) {
     wk_run *R = W->R;
-    W->n_shield = 0;
+    W->n_shield = W->n_shield_ix = 0;
     for (uint32_t i = 0; W->input_sides && i < W->n_seeds; i++) {
         uint32_t v = W->seeds[i];
         const wk_wf_vertex *V = &W->v[v];
@@ -692,8 +749,7 @@ static wk_status plan_shields(wk_wavefront *W, double t) {
                     if (W->shield[j].node == k) W->shield[j].node = k2;
                 k = k2;
             }
-            if (WK_GROW(R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return R->err.code;
-            W->shield[W->n_shield++] = (wk_wf_shield){x, k, a};
+            if (add_shield(W, x, k, a) != WK_OK) return R->err.code;
         }
     }
     W->n_gap_shield = W->n_shield;
@@ -731,9 +787,7 @@ static wk_status shield_slow_stretch(wk_wavefront *W, uint32_t k, wk_point q, ui
     if (!X->alive || X->seen != W->stamp || shield_of(W, x, k)) return WK_OK;
     if (!wk_stretch_collapses_later(&W->L[e], q, vnew, wk_wf_pos(X, t), X->vel, x_after, W->eps_t))
         return WK_OK;
-    if (WK_GROW(W->R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return W->R->err.code;
-    W->shield[W->n_shield++] = (wk_wf_shield){x, k, piece};
-    return WK_OK;
+    return add_shield(W, x, k, piece);
 }
 
 /* True if seed x is a split that lands outside its target piece (beyond
@@ -944,8 +998,7 @@ static wk_status plan_arrivals(wk_wavefront *W, double t) {
             u->at = forced_track_node(W, W->comp[i], t);
         if (u->at != WK_NONE && W->n_shield && shield_of(W, W->comp[i], u->at)) u->at = WK_NONE;
         if (u->at != WK_NONE && (W->n_shield || u->gap_made) && bystander(W, W->comp[i], u->at, t)) {
-            if (WK_GROW(W->R, W->shield, W->cap_shield, W->n_shield + 1) != WK_OK) return W->R->err.code;
-            W->shield[W->n_shield++] = (wk_wf_shield){W->comp[i], u->at, WK_NONE};
+            if (add_shield(W, W->comp[i], u->at, WK_NONE) != WK_OK) return W->R->err.code;
             u = &W->v[W->comp[i]];
             u->at = WK_NONE;
         }
@@ -1187,8 +1240,31 @@ static wk_status plan_pinches(wk_wavefront *W, double t) {
 ** tolerance off the piece's line (detection and resolution must agree, or
 ** the same event would be found again and again).  Then the pinches are
 ** sorted by piece. */
+/* plan_seed_cuts' pinches by (piece, node), from WF_INDEX_MIN pinches on
+** (else 0 slots: it scans them).  It asked for an existing pinch by a scan
+** of all pinches per split seed, O(seeds x pinches): 10% of rectilinear
+** 10^6 (perf), where groups with forced vertices pinch whole cycles. */
+static uint32_t pin_slot(const wk_wavefront *W, uint32_t size, uint32_t a, uint32_t k) {
+    uint32_t h = hash_slot(a ^ (k * 0x9E3779B9u), size);
+    while (W->pin_ix[h] != WK_NONE && (W->pin[W->pin_ix[h]].piece != a || W->pin[W->pin_ix[h]].node != k))
+        h = h + 1 == size ? 0 : h + 1;
+    return h;
+}
+
 static wk_status plan_seed_cuts(wk_wavefront *W, double t) {
     wk_run *R = W->R;
+    /* at most one pinch per seed joins those of plan_pinches: a load of at
+    ** most a half */
+    uint32_t size = 0;
+    if (W->n_pin >= WF_INDEX_MIN) {
+        for (size = 64; size < 2 * (W->n_pin + W->n_seeds); size *= 2) {}
+        if (WK_GROW(R, W->pin_ix, W->cap_pin_ix, size) != WK_OK) return R->err.code;
+        for (uint32_t h = 0; h < size; h++) W->pin_ix[h] = WK_NONE;
+        for (uint32_t j = 0; j < W->n_pin; j++) {
+            uint32_t h = pin_slot(W, size, W->pin[j].piece, W->pin[j].node);
+            if (W->pin_ix[h] == WK_NONE) W->pin_ix[h] = j;
+        }
+    }
     for (uint32_t i = 0; i < W->n_seeds; i++) {
         const wk_wf_vertex *u = &W->v[W->seeds[i]];
         if (u->ev_kind != WK_WF_SPLIT || u->at == WK_NONE || (W->n_swept && is_swept(W, W->seeds[i]))) continue;
@@ -1198,7 +1274,11 @@ static wk_status plan_seed_cuts(wk_wavefront *W, double t) {
         const wk_wf_vertex *B = &W->v[A->next];
         if (k == A->at || k == B->at) continue;
         bool have = false;
-        for (uint32_t j = 0; j < W->n_pin; j++) have |= W->pin[j].piece == a && W->pin[j].node == k;
+        if (size) {
+            have = W->pin_ix[pin_slot(W, size, a, k)] != WK_NONE;
+        } else {
+            for (uint32_t j = 0; j < W->n_pin; j++) have |= W->pin[j].piece == a && W->pin[j].node == k;
+        }
         if (have) continue;
         const wk_offset_line *L = &W->L[A->eout];
         wk_point pa = A->at != WK_NONE ? W->cl[A->at].p : wk_wf_pos(A, t);
@@ -1214,6 +1294,7 @@ static wk_status plan_seed_cuts(wk_wavefront *W, double t) {
         } else {
             if (WK_GROW(R, W->pin, W->cap_pin, W->n_pin + 1) != WK_OK) return R->err.code;
             W->pin[W->n_pin++] = (wk_wf_pinch){a, sq, k};
+            if (size) W->pin_ix[pin_slot(W, size, a, k)] = W->n_pin - 1;
         }
     }
     if (W->n_pin > 1) qsort(W->pin, W->n_pin, sizeof *W->pin, cmp_pinch);

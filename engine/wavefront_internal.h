@@ -132,6 +132,14 @@ struct wk_wavefront {
     uint32_t *run, *run_node; uint32_t n_run, cap_run, cap_run_node; /* collinear runs */
     wk_wf_shield *shield; uint32_t n_shield, cap_shield; /* this group's shielded piece ends */
     uint32_t n_gap_shield; /* shield[0 .. n_gap_shield): plan_shields' (gaps between rings) */
+    /* the shields by vertex once there are WF_INDEX_MIN (wavefront_group.c,
+    ** shield_of): a hash table of shield ids (WK_NONE: empty) keyed by the
+    ** shield's vertex, each the newest of its vertex, and per shield the
+    ** next older one of the same vertex (shield_older); 0 slots: off */
+    uint32_t *shield_ix; uint32_t n_shield_ix, cap_shield_ix;
+    uint32_t *shield_older; uint32_t cap_shield_older;
+    /* plan_seed_cuts' pinches by (piece, node): a hash table of pinch ids */
+    uint32_t *pin_ix; uint32_t cap_pin_ix;
     uint32_t n_own;    /* this plan's nodes of one seed (wk_wf_cluster.own) */
     /* a large group's nodes and untouched vertices by place
     ** (wavefront_group.c, WF_GRID_MIN); off: the plan scans */
@@ -148,6 +156,12 @@ struct wk_wavefront {
     const wk_split_finder *finder; /* how split events are found */
     void *finder_ud;
 };
+
+/* The likely final size of the arrays that grow by one per wavefront
+** vertex or skeleton node (WK_GROW_HINT): 2n + 16. */
+static inline uint32_t wf_size_hint(const wk_wavefront *W) {
+    return W->P->n < UINT32_MAX / 4 ? 2 * W->P->n + 16 : 0;
+}
 
 /* Position of vertex V at time t (relative to W->origin). */
 static inline wk_point wk_wf_pos(const wk_wf_vertex *V, double t) {

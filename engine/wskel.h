@@ -347,6 +347,17 @@ void *wk_grow_ptr(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_
 #define WK_GROW(R, p, cap, need)                                                   \
     ((p) = wk_grow_ptr((R), (p), &(cap), (need), sizeof *(p)),                     \
      (wk_status)((p) != NULL && (cap) >= (uint32_t)(need) ? WK_OK : WK_ENOMEM))
+/* WK_GROW for an array whose final size is probably at most `hint` (0: no
+** hint): it grows to the power of two WK_GROW would give (at least need),
+** but to hint instead while need <= hint < that.  So its capacity is never
+** above WK_GROW's, and an array that ends within the hint holds no doubling
+** slack (the wavefront's vertices: 2n - 3 for n input vertices in general
+** position; wavefront.c). */
+void *wk_grow_ptr_hint(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_size,
+                       uint32_t hint);
+#define WK_GROW_HINT(R, p, cap, need, hint)                                        \
+    ((p) = wk_grow_ptr_hint((R), (p), &(cap), (need), sizeof *(p), (hint)),        \
+     (wk_status)((p) != NULL && (cap) >= (uint32_t)(need) ? WK_OK : WK_ENOMEM))
 /* The same for an array held in an object of type void * (*pp must be one:
 ** for a T * use WK_GROW, or copy it to a void * and back). */
 wk_status wk_grow(wk_run *R, void **pp, uint32_t *cap, uint32_t need, size_t elem_size);
@@ -635,6 +646,8 @@ typedef struct wk_skeleton {
     double horizon;          /* a PSLG's skeleton: the time horizon T (its cap,
                                 the wavefront at T, has arcs with WK_NONE on
                                 the left); 0 otherwise */
+    uint32_t cap_hint;       /* nodes and arcs grow with this hint
+                                (WK_GROW_HINT; 0: none) */
 } wk_skeleton;
 
 /* New skeleton whose first P->n nodes are P's vertices at t = 0. */

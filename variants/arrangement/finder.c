@@ -597,7 +597,7 @@ static wk_status ar_after_group(void *ud, wk_wavefront *W, double t) {
 static double ar_next_time(void *ud) {
     ar_state *A = ud;
     if (!A->Q.size) return INFINITY;
-    return A->Q.key[wk_event_queue_peek(&A->Q)].time;
+    return wk_event_queue_time(&A->Q, wk_event_queue_peek(&A->Q));
 }
 
 /* Cut s' at lambda' (a crossing X): F' := X on piece a. */

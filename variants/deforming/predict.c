@@ -747,7 +747,7 @@ static wk_status pair_update(df_state *D, uint32_t p, uint32_t a) {
     D->tests++;
     if (test_penetration(D, p, a, D->t, D->t1, eps_c) != WK_OK) return D->R->err.code;
     if (D->best == INFINITY ||
-        (wk_event_queue_contains(&D->Q, p) && D->Q.key[p].time <= D->best))
+        (wk_event_queue_contains(&D->Q, p) && wk_event_queue_time(&D->Q, p) <= D->best))
         return WK_OK;
     return wk_event_queue_set(D->R, &D->Q, p, (wk_event_key){D->best, 0});
 }
@@ -867,7 +867,7 @@ wk_status df_next_group(df_state *D, double *t_event) {
     *t_event = INFINITY;
     D->collect = true;
     for (uint32_t p; (p = wk_event_queue_peek(&D->Q)) != WK_NONE;) {
-        if (D->Q.key[p].time > D->best + D->eps_t) break;
+        if (wk_event_queue_time(&D->Q, p) > D->best + D->eps_t) break;
         (void)wk_event_queue_pop(R, &D->Q);
         if (WK_GROW(R, D->popped, D->cap_popped, D->n_popped + 1) != WK_OK ||
             predict_vertex(D, p) != WK_OK) {

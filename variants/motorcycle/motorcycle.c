@@ -263,10 +263,15 @@ static mc_cross next_down(const mc_seg *S, double lam, uint32_t after) {
 
 /* ------------------------------------------------------------ bookkeeping */
 
-static wk_status ensure_vertex_arrays(mc_state *A, uint32_t nv) {
+static wk_status ensure_vertex_arrays(mc_state *A, const wk_wavefront *W, uint32_t nv) {
     if (nv <= A->cap_v) return WK_OK;
-    uint32_t ncap = A->cap_v ? A->cap_v : 64;
-    while (ncap < nv) ncap *= 2;
+    /* doubling, but stopping at 2n + 16 first, as the engine's vertex
+    ** array does (wavefront.c, wf_new_vertex): the 2n - 3 wavefront vertices
+    ** of n input vertices in general position, no doubling slack */
+    uint32_t n = wk_wf_polygon(W)->n, hint = n < UINT32_MAX / 4 ? 2 * n + 16 : 0;
+    uint32_t ncap = 64;
+    while (ncap < nv || ncap < A->cap_v) ncap *= 2;
+    if (hint && nv <= hint && hint < ncap && hint >= A->cap_v) ncap = hint;
     uint32_t *so = WK_NEW_ARRAY(A->R, uint32_t, ncap);
     uint32_t *fh = so ? WK_NEW_ARRAY(A->R, uint32_t, ncap) : NULL;
     uint32_t *bh = fh ? WK_NEW_ARRAY(A->R, uint32_t, ncap) : NULL;
@@ -1040,7 +1045,7 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     mc_state *A = ud;
     wk_run *R = A->R;
     const wk_polygon *P = wk_wf_polygon(W);
-    if (ensure_vertex_arrays(A, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
+    if (ensure_vertex_arrays(A, W, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
     if (find_contacts(A, W) != WK_OK) return R->err.code;
     wk_motorcycle_graph *G = NULL;
     double t0 = wk_phase_begin(); /* M(P): the variant's timed phase */
@@ -1224,7 +1229,7 @@ static wk_status flush_extensions(mc_state *A, wk_wavefront *W, double t) {
 static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
     mc_state *A = ud;
     wk_run *R = A->R;
-    if (ensure_vertex_arrays(A, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
+    if (ensure_vertex_arrays(A, W, wk_wf_vertex_count(W)) != WK_OK) return R->err.code;
     if (mc_pg_after_group(R, &A->pg, W, t) != WK_OK) return R->err.code;
     const uint32_t *fresh, *ended;
     uint32_t n_fresh, n_ended;
@@ -1334,7 +1339,7 @@ static wk_status mc_after_group(void *ud, wk_wavefront *W, double t) {
 static double mc_next_time(void *ud) {
     mc_state *A = ud;
     if (!A->Q.size) return INFINITY;
-    return A->Q.key[wk_event_queue_peek(&A->Q)].time;
+    return wk_event_queue_time(&A->Q, wk_event_queue_peek(&A->Q));
 }
 
 static bool unswept(const wk_wavefront *W, const mc_seg *T, double lx, double t);
