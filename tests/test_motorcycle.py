@@ -32,6 +32,11 @@ OWN_ANSWER_FILES = [
     # a ghost whose B met F at the notched family's hub left a trace waiting
     # at its end (motorcycle.c, mc_process_next, MC_DONE)
     "tests/data/degenerate/mc_hub_ghost_done.wpoly",
+    # two needle valleys' motorcycles crossing 8.3e-10 apart (eps_t 1.1e-9) at
+    # speed 9.5e4: one simultaneous group ended the first one's trace 120
+    # units short of its reflex arc (motorcycle_graph.c, sequential; star
+    # n = 10^6 seed 1 reduced)
+    "tests/data/degenerate/mc_fast_valleys_near_simultaneous.wpoly",
 ]
 
 
