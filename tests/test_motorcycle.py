@@ -37,6 +37,10 @@ OWN_ANSWER_FILES = [
     # units short of its reflex arc (motorcycle_graph.c, sequential; star
     # n = 10^6 seed 1 reduced)
     "tests/data/degenerate/mc_fast_valleys_near_simultaneous.wpoly",
+    # a trace grazing a wall vertex 1.2e-6 away (eps_d 1.3e-6): the shot
+    # placing F missed both of its pieces and put F beyond the trace's end
+    # (motorcycle.c, wall_vertex_piece; star n = 10^6 seed 1 reduced)
+    "tests/data/degenerate/mc_wall_vertex_grazed.wpoly",
 ]
 
 
