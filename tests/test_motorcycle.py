@@ -32,6 +32,15 @@ OWN_ANSWER_FILES = [
     # a ghost whose B met F at the notched family's hub left a trace waiting
     # at its end (motorcycle.c, mc_process_next, MC_DONE)
     "tests/data/degenerate/mc_hub_ghost_done.wpoly",
+    # two needle valleys' motorcycles crossing 8.3e-10 apart (eps_t 1.1e-9) at
+    # speed 9.5e4: one simultaneous group ended the first one's trace 120
+    # units short of its reflex arc (motorcycle_graph.c, sequential; star
+    # n = 10^6 seed 1 reduced)
+    "tests/data/degenerate/mc_fast_valleys_near_simultaneous.wpoly",
+    # a trace grazing a wall vertex 1.2e-6 away (eps_d 1.3e-6): the shot
+    # placing F missed both of its pieces and put F beyond the trace's end
+    # (motorcycle.c, wall_vertex_piece; star n = 10^6 seed 1 reduced)
+    "tests/data/degenerate/mc_wall_vertex_grazed.wpoly",
 ]
 
 

@@ -1041,6 +1041,48 @@ static wk_status extend_origin_crashes(mc_state *A, wk_wavefront *W, uint32_t n_
     return st;
 }
 
+/* F's piece at t = 0 for a trace whose motorcycle crashed into the
+** input vertex w (M(P)'s wall_vertex: the ray passes within the shooter's
+** tol of w): of w's two pieces, the one whose line the trace leaves through
+** (its crossing moves towards v); if both, the nearer at a convex w (the
+** wavefront is the intersection of the two sides there), the farther at a
+** reflex one (their union); WK_NONE if w or a piece is not of t = 0.
+** Used where place_f's shot put F beyond the wall, and not at a reflex w
+** coming towards v (with either, the fuzz files
+** ealgo_naive_h_needles_tips_pass and invalid_naive_h_needles_fold differed
+** from naive: a needle tip's trace ends head-on at another tip): a ray
+** passing a corner within eps_d can miss both of its pieces by rounding
+** (the hit on one beyond its end by more than WK_RAY_PIECE_SLACK, on the
+** other before its start) and hit a piece beyond the wall.  Star n = 10^6
+** seed 1 (issue 13; reduced to the 8-gon
+** tests/data/degenerate/mc_wall_vertex_grazed.wpoly):
+** a needle valley's trace along a spike's flank passes the flank's foot
+** (a reflex vertex) 1.2e-6 away (eps_d 1.3e-6); the shot put F on a piece
+** 797 along the trace, beyond its end at 85, so the vertex's split of the
+** flank at t = 0.0068 (naive's node) was never offered, the spike's tip
+** collapsed onto a vertex that never died and the reference answered. */
+static uint32_t wall_vertex_piece(const wk_wavefront *W, const mc_seg *S, uint32_t w) {
+    if (w == WK_NONE || !wk_wf_alive(W, w) || wk_wf_start_time(W, w) != 0) return WK_NONE;
+    uint32_t two[2] = {wk_wf_prev(W, w), w}, best = WK_NONE;
+    bool reflex = wk_wf_reflex(W, w);
+    /* a reflex w coming towards v along the trace sweeps it itself (the H
+    ** with needles: needle tips head-on, F beyond as the shot put it) */
+    wk_point w0 = wk_wf_position(W, w, 0.0), w1 = wk_wf_position(W, w, 1.0);
+    if (reflex && (w1.x - w0.x) * S->u.x + (w1.y - w0.y) * S->u.y < 0) return WK_NONE;
+    double best_l = reflex ? -INFINITY : INFINITY;
+    for (int k = 0; k < 2; k++) {
+        uint32_t a = two[k];
+        if (!wk_wf_alive(W, a) || wk_wf_start_time(W, a) != 0 || a == S->v ||
+            wk_wf_next(W, a) == S->v)
+            return WK_NONE;
+        const wk_offset_line *L = wk_wf_line(W, wk_wf_edge_out(W, a));
+        double l0 = lambda_on_line(S, L, 0.0), l1 = lambda_on_line(S, L, 1.0);
+        if (isfinite(l0) && isfinite(l1) && l1 < l0 && (reflex ? l0 > best_l : l0 < best_l))
+            best_l = l0, best = a;
+    }
+    return best;
+}
+
 static wk_status mc_start(void *ud, wk_wavefront *W) {
     mc_state *A = ud;
     wk_run *R = A->R;
@@ -1067,6 +1109,7 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
     }
     for (uint32_t i = 0; st == WK_OK && i < G->n; i++) {
         const wk_motorcycle *m = &G->m[i];
+        uint32_t wa;
         seg_id[i] = WK_NONE;
         if (!wk_wf_alive(W, m->vertex) || !wk_wf_reflex(W, m->vertex)) continue;
         uint32_t si;
@@ -1080,8 +1123,13 @@ static wk_status mc_start(void *ud, wk_wavefront *W) {
                    wk_wf_start_time(W, m->wall_edge) == 0 &&
                    wk_wf_edge_out(W, m->wall_edge) == m->wall_edge) {
             link_f(A, W, si, m->wall_edge);
-        } else {
-            st = place_f(A, W, si, 0.0, true);
+        } else if ((st = place_f(A, W, si, 0.0, true)) == WK_OK && m->wall_vertex != WK_NONE &&
+                   A->s[si].pa != WK_NONE &&
+                   lambda_f(W, &A->s[si], 0.0) > m->len + WK_RELOCATE_SLACK * wk_wf_eps_d(W) &&
+                   (wa = wall_vertex_piece(W, &A->s[si], m->wall_vertex)) != WK_NONE) {
+            /* the shot put F beyond the wall it crashed into */
+            unlink_f(A, si);
+            link_f(A, W, si, wa);
         }
     }
     /* the resting Steiner vertices: the traces ending on each trace, and

@@ -253,6 +253,28 @@ typedef struct sim {
 
 static inline double tau(const wk_motorcycle *m, double d) { return wk_motorcycle_time_at(m, d); }
 
+/* Whether i and j reach their crossing one after the other (arrival times
+** ti, tj): more than eps_t apart, or apart by more than eps_d of travel of
+** either (a finite speed; a degenerate vertex's INFINITY has tau = 0 on its
+** whole trace and keeps the time rule).  The engine's own rule for such
+** fast vertices (wavefront.c defers an event whose vertex is more than
+** eps_d away at the group's time): at speed 1e5 eps_t is 1e-4 of travel,
+** 100 eps_d.  Star n = 10^6 seed 1 (issue 13; reduced to the 8-gon
+** tests/data/degenerate/mc_fast_valleys_near_simultaneous.wpoly): two needle
+** valleys' motorcycles (speeds 9.5e4) cross at the centre 8.3e-10 apart
+** (eps_t 1.1e-9): one SIMULTANEOUS group ended both traces there, but the
+** first one's vertex runs on 8e-5 past the crossing before the other
+** arrives, and 120 units further (naive: its reflex arc ends at t = 0.0035),
+** off its trace: no split was ever offered for it, it was still alive when
+** the queue ran empty and the reference answered. */
+static bool sequential(const sim *S, uint32_t i, double ti, uint32_t j, double tj) {
+    double dt = fabs(ti - tj);
+    if (dt > S->eps_t) return true;
+    double vi = S->m[i].speed, vj = S->m[j].speed;
+    double v = isfinite(vi) && isfinite(vj) ? fmax(vi, vj) : isfinite(vi) ? vi : isfinite(vj) ? vj : 0;
+    return dt * v > S->eps_d;
+}
+
 /* ======================================================= the candidates */
 
 /* Where motorcycles i < j meet (see the header's candidates): distances
@@ -426,7 +448,7 @@ static wk_status process_crossing(sim *S, uint32_t i, uint32_t j) {
     wk_point x;
     if (!meet(S, i, j, &di, &dj, &x)) return WK_OK; /* defensive: pushed only if they meet */
     double ti = tau(&S->m[i], di), tj = tau(&S->m[j], dj);
-    if (fabs(ti - tj) > S->eps_t) {
+    if (sequential(S, i, ti, j, tj)) {
         uint32_t w = ti < tj ? i : j, l = ti < tj ? j : i;
         double dw = ti < tj ? di : dj, dl = ti < tj ? dj : di;
         if (S->crashed[l]) return WK_OK;
@@ -554,7 +576,7 @@ static wk_status test_pair(sim *S, geo *gi, const geo *gj, uint32_t cell) {
     if (gj->clen < INFINITY && !(gj->clen < dj - S->eps_d) && di < gi->bound &&
         !(di >= S->m[i].wall_len - S->eps_d)) {
         double ti = tau(&S->m[i], di), tj = tau(&S->m[j], dj);
-        if (fabs(ti - tj) > S->eps_t && tj < ti) gi->bound = di;
+        if (sequential(S, i, ti, j, tj) && tj < ti) gi->bound = di;
     }
     if (gi->bound + 2.0 * S->eps_d < di || lim_j < dj || cell_of(S, x) != cell) return WK_OK;
     if (gj->clen < dj - S->eps_d) return WK_OK;
