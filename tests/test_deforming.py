@@ -255,6 +255,23 @@ class Deforming(unittest.TestCase):
         self.assertLessEqual(abs(Decimal(y) - want[1]), Decimal(tol), (x, y, t, want))
         self.assertLessEqual(abs(Decimal(t) - want[2]), Decimal(tol), (x, y, t, want))
 
+    def test_moved_glyph_fast_collapse_same_as_naive(self):
+        # issue 14: a glyph turned and moved to (-1e6, 2e6), its stroke sides
+        # 1e-11 rad from antiparallel: the fast vertex between them meets two
+        # lines 1e-12 apart in time and 0.32 apart in space; the later
+        # "collapse" took a slow vertex 0.009 away into the node, the
+        # validator refused it and the reference answered (resolve.c,
+        # superseded_collapse).  Now the variant answers it itself, as naive.
+        path = os.path.join(tl.DATA, "holes", "deform_glyph_moved_fast_collapse.wpoly")
+        rc, got, err = self.deforming(path)
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(stat(got, "reference_fallbacks"), 0)
+        rc, out_n, err_n = tl.run([tl.WSKEL, "--check", path])
+        self.assertEqual(rc, 0, err_n)
+        ok, why = tl.same_skeleton(tl.json.loads(out_n), got)
+        self.assertTrue(ok, why)
+        self.assertEqual(len(got["arcs"]), 164)
+
     def test_sliver_stress_nodes_are_exact(self):
         # stress s1-c02889 (edges 13 and 17 parallel to 2.3e-9 rad) and
         # s1-c07842 (edge 40, 1.5e-9 long, collinear with 39 and 41 up to

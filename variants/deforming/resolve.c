@@ -821,6 +821,23 @@ static wk_status plan_slow_stretches(df_state *D, double te, double eps_c) {
     return WK_OK;
 }
 
+/* Collapse i shares an end with a collapse j of the group that happens
+** strictly earlier at a point beyond the contact distance of i's (see
+** resolve, step 1). */
+static bool superseded_collapse(const df_state *D, uint32_t i, double te, double eps_c) {
+    const df_event *E = &D->ev[i];
+    uint32_t a = E->a, b = D->v[a].next;
+    wk_point X = event_point(D, E, te);
+    for (uint32_t j = 0; j < D->n_ev; j++) {
+        const df_event *F = &D->ev[j];
+        if (j == i || F->kind != DF_COLLAPSE || !(F->t < E->t)) continue;
+        uint32_t fa = F->a, fb = D->v[fa].next;
+        if (fa != a && fa != b && fb != a && fb != b) continue;
+        if (dist2(event_point(D, F, te), X) > eps_c * eps_c) return true;
+    }
+    return false;
+}
+
 /* Vertex x is within the contact distance of X at te, or within what it
 ** covers in the group's span after te (see "neighbours within reach"). */
 static bool within_reach(const df_state *D, uint32_t x, wk_point X, double te, double eps_c,
@@ -845,6 +862,20 @@ static wk_status resolve(df_state *D, double te) {
         if (E->kind == DF_COLLAPSE) {
             uint32_t a = E->a, b = D->v[a].next;
             wk_point X = event_point(D, E, te);
+            /* A collapse that shares an end with an earlier collapse of the
+            ** group at another point (beyond the contact distance) collapses
+            ** nothing: that end is a fast vertex between nearly antiparallel
+            ** lines, whose meeting point races along them at ~1/sin, and it
+            ** ends at the earlier point, where its line leaves this part of
+            ** the wavefront; this piece's other end arrives later.  A
+            ** glyph's stroke 8.1 wide, its sides 1e-11 rad from antiparallel
+            ** (turned and moved to 1e6: coordinates rounded to 1e-10),
+            ** collapsed along its length at t = 4.0547; its fast vertex's two
+            ** pieces "collapsed" 1e-12 apart at points 0.32 apart, the
+            ** vertex at both made them one node, and the slow end of the
+            ** later piece came into it 0.009 off its lines (validate (c),
+            ** the reference; tests/data/holes/deform_glyph_moved_fast_collapse.wpoly). */
+            if (superseded_collapse(D, i, te, eps_c)) continue;
             if (add_member(D, a, k) != WK_OK || add_member(D, b, k) != WK_OK)
                 return R->err.code;
             wk_notify_event(R, WK_VC_edge_swaps, &(wk_event){te, X.x + D->o.x, X.y + D->o.y, a, b, WK_NONE});
