@@ -136,6 +136,7 @@ test-py: all python
 	$(PY) tests/test_near_touch.py
 	$(PY) tests/test_exact_nodes.py
 	$(PY) tests/test_motorcycle.py
+	WSKEL_GLYPH_CASES=all $(PY) tests/test_glyphs.py
 	WSKEL_DEFORMING_MAX_N=256 $(PY) tests/test_deforming.py
 	$(PY) tests/test_cgal_agreement.py
 	$(PY) tests/test_offset_cgal.py
