@@ -208,10 +208,10 @@ void *wk_calloc(wk_run *R, size_t count, size_t size) {
     return p;
 }
 
-void *wk_grow_ptr(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_size) {
-    if (need <= *cap && p) return p;
-    uint64_t ncap = *cap ? *cap : 8;
-    while (ncap < need) ncap *= 2;
+/* The grow functions' common end: resize p to ncap elements (clamped to
+** the 32-bit ids), or fail naming the size and keep p as it was. */
+static void *resize_to(wk_run *R, void *p, uint32_t *cap, uint32_t need, uint64_t ncap,
+                       size_t elem_size) {
     if (ncap > UINT32_MAX - 1) ncap = UINT32_MAX - 1;
     if (ncap < need || (elem_size && ncap > SIZE_MAX / elem_size)) {
         WK_FAIL(R, WK_ENOMEM, NULL, 0, "array of %u elements of %zu bytes too large", need,
@@ -224,22 +224,20 @@ void *wk_grow_ptr(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_
     return q;
 }
 
+void *wk_grow_ptr(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_size) {
+    if (need <= *cap && p) return p;
+    uint64_t ncap = *cap ? *cap : 8;
+    while (ncap < need) ncap *= 2;
+    return resize_to(R, p, cap, need, ncap, elem_size);
+}
+
 void *wk_grow_ptr_hint(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_size,
                        uint32_t hint) {
     if (need <= *cap && p) return p;
     uint64_t ncap = 8;
     while (ncap < need || ncap < *cap) ncap *= 2;
     if (hint && need <= hint && hint < ncap && hint >= *cap) ncap = hint;
-    if (ncap > UINT32_MAX - 1) ncap = UINT32_MAX - 1;
-    if (ncap < need || (elem_size && ncap > SIZE_MAX / elem_size)) {
-        WK_FAIL(R, WK_ENOMEM, NULL, 0, "array of %u elements of %zu bytes too large", need,
-                elem_size);
-        return p;
-    }
-    void *q = wk_realloc(R, p, p ? (size_t)*cap * elem_size : 0, (size_t)ncap * elem_size);
-    if (!q) return p;
-    *cap = (uint32_t)ncap;
-    return q;
+    return resize_to(R, p, cap, need, ncap, elem_size);
 }
 
 wk_status wk_grow(wk_run *R, void **pp, uint32_t *cap, uint32_t need, size_t elem_size) {
