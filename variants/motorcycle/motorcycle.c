@@ -1889,6 +1889,27 @@ static wk_status motorcycle_run(wk_run *R, const wk_polygon *P, wk_skeleton **ou
                            "of a weighted skeleton (README); use --variant naive or arrangement",
                            wk_polygon_input_edge(P, i), P->w[i], wk_polygon_input_edge(P, 0), P->w[0]);
     *out = NULL;
+    /* A rung of wk_solve_checked other than the first (tol_scale != 1) is
+    ** reached only when the default picture failed: the input has features
+    ** within a few eps_d.  There the trace finder's own run can pass the
+    ** validator and still be a different skeleton from the reference's and
+    ** CGAL's: fuzz H shapes near (1e6, 1e6) with strips 1 wide and one
+    ** vertex pulled to 1e10..1e11 (eps_d ~ 10..100).  At 1/4 a node on a
+    ** strip came at t 0.25 instead of the midline's 0.5, 1.2e5 along the
+    ** strip from naive's and CGAL's (tests/data/fuzz/
+    ** mismatch_motorcycle_h_strip_finer_rung.wpoly); at 64 an arc across
+    ** the needle got the wrong faces (..._h_strip_coarser_rung.wpoly).
+    ** The validator's tolerance (1e-6 of a diagonal of 1e10) cannot see
+    ** either.  So on any other rung the reference answers
+    ** (reference_fallbacks), and when it fails too the ladder goes on to
+    ** its next rung, as naive's own run does. */
+    if (R->opt.tol_scale > 0 && R->opt.tol_scale != 1) {
+        WK_FAIL(R, WK_EALGO, P->name, 0,
+                "motorcycle: tolerance rung %g (the default failed): features within a few "
+                "eps_d, the reference answers",
+                R->opt.tol_scale);
+        return wk_solve_by_reference(R, P, WK_VC_reference_fallbacks, out);
+    }
     mc_state A;
     memset(&A, 0, sizeof A);
     A.R = R;
