@@ -367,7 +367,14 @@ class Deforming(unittest.TestCase):
         # answers only at tolerance 1/16, deforming's own run gives up on every rung
         # before, so the reference answers; equal to naive and CGAL)
         "mismatch_motorcycle_h_strip_finer_rung.wpoly",
-        "mismatch_motorcycle_h_strip_coarser_rung.wpoly"}
+        "mismatch_motorcycle_h_strip_coarser_rung.wpoly",
+        # branch hcycle (the H near 1e6 of the variants fuzz run of 2026-12-03, in
+        # KNOWN as naive=invalid deforming=ok): deforming's own run fails at the
+        # first rungs (its skeleton closes a cycle, or "two pieces leave an event
+        # point side by side") and the reference's answer there is invalid too;
+        # the valid skeleton is deforming's own at rung 4 (weight6) and 1/64
+        # (far_1e11): reference_fallbacks 1 and 6 count the failed hand-overs
+        "invalid_naive_h_weight6_foot_across_gap.wpoly", "invalid_naive_h_far_1e11_cycle.wpoly"}
     # answered since session deform11 (a reflex input vertex within the contact
     # distance of another input vertex, of any ring, meets the piece there at
     # t = 0: predict.c, together_since_birth; each equals naive):
