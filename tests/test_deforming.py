@@ -262,15 +262,20 @@ class Deforming(unittest.TestCase):
         # "collapse" took a slow vertex 0.009 away into the node, the
         # validator refused it and the reference answered (resolve.c,
         # superseded_collapse).  Now the variant answers it itself, as naive.
-        path = os.path.join(tl.DATA, "holes", "deform_glyph_moved_fast_collapse.wpoly")
-        rc, got, err = self.deforming(path)
-        self.assertEqual(rc, 0, err)
-        self.assertEqual(stat(got, "reference_fallbacks"), 0)
-        rc, out_n, err_n = tl.run([tl.WSKEL, "--check", path])
-        self.assertEqual(rc, 0, err_n)
-        ok, why = tl.same_skeleton(tl.json.loads(out_n), got)
-        self.assertTrue(ok, why)
-        self.assertEqual(len(got["arcs"]), 164)
+        # deform_glyph_moved_path_order: such a vertex's two collapses (3.3e11,
+        # computed 4.5e-11 apart in the order opposite to its path) go by its
+        # path (validate (f) before; DejaVuSans 'a').
+        for name, arcs in (("deform_glyph_moved_fast_collapse.wpoly", 164),
+                           ("deform_glyph_moved_path_order.wpoly", 175)):
+            path = os.path.join(tl.DATA, "holes", name)
+            rc, got, err = self.deforming(path)
+            self.assertEqual(rc, 0, (name, err))
+            self.assertEqual(stat(got, "reference_fallbacks"), 0, name)
+            rc, out_n, err_n = tl.run([tl.WSKEL, "--check", path])
+            self.assertEqual(rc, 0, (name, err_n))
+            ok, why = tl.same_skeleton(tl.json.loads(out_n), got)
+            self.assertTrue(ok, (name, why))
+            self.assertEqual(len(got["arcs"]), arcs, name)
 
     def test_sliver_stress_nodes_are_exact(self):
         # stress s1-c02889 (edges 13 and 17 parallel to 2.3e-9 rad) and

@@ -830,10 +830,26 @@ static bool superseded_collapse(const df_state *D, uint32_t i, double te, double
     wk_point X = event_point(D, E, te);
     for (uint32_t j = 0; j < D->n_ev; j++) {
         const df_event *F = &D->ev[j];
-        if (j == i || F->kind != DF_COLLAPSE || !(F->t < E->t)) continue;
+        if (j == i || F->kind != DF_COLLAPSE) continue;
         uint32_t fa = F->a, fb = D->v[fa].next;
         if (fa != a && fa != b && fb != a && fb != b) continue;
-        if (dist2(event_point(D, F, te), X) > eps_c * eps_c) return true;
+        wk_point Y = event_point(D, F, te);
+        if (dist2(Y, X) <= eps_c * eps_c) continue;
+        /* Within eps_t the shared end's two contacts are ordered by where
+        ** they lie along its path, not by their times: at ~1e11 the times
+        ** are off by more than the gap between them.  The glyph 'a' turned
+        ** and moved to 1e6 (DejaVuSans_normal_c97_1): vertex 165, between
+        ** lines 57 and 59 at 3.3e11, reaches vertex 57 (slow) before its
+        ** other end, 6.2 units on, yet the computed times put the farther
+        ** collapse first by 4.5e-11; taken by time, it ended at the farther
+        ** point and left 57's piece behind (validate (f), the reference). */
+        bool earlier = F->t < E->t;
+        if (fabs(F->t - E->t) <= D->eps_t) {
+            const df_vertex *V = &D->v[(fa == a || fa == b) ? fa : fb];
+            double d = (Y.x - X.x) * V->v.x + (Y.y - X.y) * V->v.y;
+            earlier = d < 0 || (d == 0 && F->t < E->t);
+        }
+        if (earlier) return true;
     }
     return false;
 }
