@@ -179,6 +179,11 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
     size_t peak = 0;
     wk_error first;
     wk_status st = WK_OK;
+    /* reference_fallbacks adds up over the rungs, so the reason of the first
+    ** hand-over is kept over them too (each wk_solve starts afresh): a run
+    ** answered on a later rung still says why an earlier rung's own run gave
+    ** up (a moved glyph printed the counter without a reason). */
+    char reason[sizeof R->fallback_reason] = "";
     /* The ladder: the given tolerances, then coarser ones up to
     ** WK_TOL_ESCALATE_MAX, then finer ones down to WK_TOL_REFINE_MIN
     ** (tolerance.h says when each helps).  A first attempt that succeeds
@@ -197,6 +202,12 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
         st = wk_solve(R, V, P, out, &t_s, &pk);
         total_s += t_s;
         phase_s += R->phase_s;
+        if (!reason[0] && R->fallback_reason[0]) {
+            if (ladder[i] == 1) memcpy(reason, R->fallback_reason, sizeof reason);
+            else
+                snprintf(reason, sizeof reason, "(tolerance x %g) %.600s", ladder[i],
+                         R->fallback_reason);
+        }
         if (pk > peak) peak = pk;
         if (st == WK_OK && (st = wk_validate(R, P, *out, tol, rep)) != WK_OK) {
             wk_skeleton_free(R, *out);
@@ -209,6 +220,7 @@ wk_status wk_solve_checked(wk_run *R, const wk_variant *V, const wk_polygon *P, 
     }
     R->opt.tol_scale = scale0;
     R->phase_s = phase_s;
+    memcpy(R->fallback_reason, reason, sizeof reason);
     if (st != WK_OK) R->err = first; /* the first attempt says what went wrong */
     if (time_s) *time_s = total_s;
     if (peak_bytes) *peak_bytes = peak;
