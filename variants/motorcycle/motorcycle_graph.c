@@ -568,6 +568,15 @@ static wk_status test_pair(sim *S, geo *gi, const geo *gj, uint32_t cell) {
             double dj = tj < 0 ? 0 : tj > gj->wall_len ? gj->wall_len : tj;
             double di = ti < 0 ? 0 : ti > gi->wall_len ? gi->wall_len : ti;
             if (gj->clen < dj - S->eps_d || lim_j < dj || lim_i < di) return WK_OK;
+            /* The no-op rule below (a crashed j, one after the other),
+            ** here before meet_geo: it sets no bound either (that wants
+            ** tj < ti and di below the bound). */
+            if (gj->clen < INFINITY) {
+                double ui = tau(&S->m[i], di), uj = tau(&S->m[j], dj);
+                if (sequential(S, i, ui, j, uj) &&
+                    (uj > ui || (gi->bound < INFINITY && ui > tau(&S->m[i], gi->bound))))
+                    return WK_OK;
+            }
         }
     }
     if (!(i < j ? meet_geo(S, gi, gj, &da, &db, &x) : meet_geo(S, gj, gi, &da, &db, &x)))
