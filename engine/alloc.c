@@ -231,13 +231,17 @@ void *wk_grow_ptr(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_
     return resize_to(R, p, cap, need, ncap, elem_size);
 }
 
+uint64_t wk_grow_capacity(uint32_t cap, uint32_t need, uint32_t hint, uint32_t first) {
+    uint64_t ncap = first;
+    while (ncap < need || ncap < cap) ncap *= 2;
+    if (hint && need <= hint && hint < ncap && hint >= cap) ncap = hint;
+    return ncap;
+}
+
 void *wk_grow_ptr_hint(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t elem_size,
                        uint32_t hint) {
     if (need <= *cap && p) return p;
-    uint64_t ncap = 8;
-    while (ncap < need || ncap < *cap) ncap *= 2;
-    if (hint && need <= hint && hint < ncap && hint >= *cap) ncap = hint;
-    return resize_to(R, p, cap, need, ncap, elem_size);
+    return resize_to(R, p, cap, need, wk_grow_capacity(*cap, need, hint, 8), elem_size);
 }
 
 wk_status wk_grow(wk_run *R, void **pp, uint32_t *cap, uint32_t need, size_t elem_size) {

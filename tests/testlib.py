@@ -186,6 +186,19 @@ def variant_outcome(wskel_bin, variant, path, naive_out, refused=None, timeout=6
     return "ok" if ok else "mismatch"
 
 
+def sweep_report(header, groups, counts, width, bad, list_bad):
+    """Print a sweep's summary (the far-vertex sweeps'): the header line, one
+    line per group of its outcome counts (counts[group][outcome]), then with
+    list_bad the failing cases (name, outcome)."""
+    print(header)
+    for g in groups:
+        print("%-*s %s" % (width, g, ", ".join("%s %d" % kv
+                                                for kv in sorted(counts.get(g, {}).items()))))
+    if list_bad:
+        for name, key in bad:
+            print("  %s: %s" % (name, key))
+
+
 # ---------------------------------------------------------- comparison
 
 def same_skeleton(a, b, tol=None, tol_t=None, weights=None):

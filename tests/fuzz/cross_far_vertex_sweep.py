@@ -129,13 +129,8 @@ def main():
                     os.replace(path, os.path.join(a.keep, name + ".wpoly"))
         counts.setdefault(kind, {}).setdefault(key, 0)
         counts[kind][key] += 1
-    print("compared %d cases (naive ran), cases %d..%d" % (total, a.first, i))
-    for kind in SHAPES:
-        print("%-6s %s" % (kind, ", ".join("%s %d" % kv
-                                           for kv in sorted(counts.get(kind, {}).items()))))
-    if a.list_bad:
-        for name, key in bad:
-            print("  %s: %s" % (name, key))
+    tl.sweep_report("compared %d cases (naive ran), cases %d..%d" % (total, a.first, i),
+                         SHAPES, counts, 6, bad, a.list_bad)
     return 0 if total > 0 else 1
 
 

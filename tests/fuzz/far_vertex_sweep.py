@@ -93,12 +93,8 @@ def main():
                         counts[fam][key] += 1
                         if os.path.exists(path):
                             os.remove(path)
-    print("compared %d cases (naive ran)" % total)
-    for fam in FAMILIES:
-        print("%-9s %s" % (fam, ", ".join("%s %d" % kv for kv in sorted(counts.get(fam, {}).items()))))
-    if a.list_bad:
-        for name, key in bad:
-            print("  %s: %s" % (name, key))
+    tl.sweep_report("compared %d cases (naive ran)" % total, FAMILIES, counts, 9, bad,
+                         a.list_bad)
     return 0 if total > 0 else 1
 
 

@@ -269,9 +269,11 @@ static wk_status ensure_vertex_arrays(mc_state *A, const wk_wavefront *W, uint32
     ** array does (wavefront.c, wf_new_vertex): the 2n - 3 wavefront vertices
     ** of n input vertices in general position, no doubling slack */
     uint32_t n = wk_wf_polygon(W)->n, hint = n < UINT32_MAX / 4 ? 2 * n + 16 : 0;
-    uint32_t ncap = 64;
-    while (ncap < nv || ncap < A->cap_v) ncap *= 2;
-    if (hint && nv <= hint && hint < ncap && hint >= A->cap_v) ncap = hint;
+    uint64_t ncap64 = wk_grow_capacity(A->cap_v, nv, hint, 64);
+    if (ncap64 > UINT32_MAX - 1)
+        return WK_FAIL(A->R, WK_ENOMEM, wk_wf_polygon(W)->name, 0,
+                       "motorcycle: %u wavefront vertices are too many", nv);
+    uint32_t ncap = (uint32_t)ncap64;
     uint32_t *so = WK_NEW_ARRAY(A->R, uint32_t, ncap);
     uint32_t *fh = so ? WK_NEW_ARRAY(A->R, uint32_t, ncap) : NULL;
     uint32_t *bh = fh ? WK_NEW_ARRAY(A->R, uint32_t, ncap) : NULL;
