@@ -357,7 +357,7 @@ void *wk_grow_ptr_hint(wk_run *R, void *p, uint32_t *cap, uint32_t need, size_t 
                        uint32_t hint);
 /* The capacity wk_grow_ptr_hint picks for an array of cap elements that must
 ** hold need (cap < need), doubling from `first`: for arrays grown in
-** lockstep by hand (the motorcycle variant's per-vertex arrays). */
+** lockstep by hand (a variant's per-vertex arrays). */
 uint64_t wk_grow_capacity(uint32_t cap, uint32_t need, uint32_t hint, uint32_t first);
 #define WK_GROW_HINT(R, p, cap, need, hint)                                        \
     ((p) = wk_grow_ptr_hint((R), (p), &(cap), (need), sizeof *(p), (hint)),        \

@@ -368,6 +368,8 @@ class Deforming(unittest.TestCase):
         # point side by side")
         "mismatch_arrangement_wcomb_spike_375831be.wpoly",
         "mismatch_arrangement_h_far_1e11_cgal_agrees.wpoly",
+        # make fuzz's finding at the stop of 2026-12-03 (the same comb family)
+        "mismatch_arrangement_wcomb_spike_e2fe33c4.wpoly",
         # branch mcfz2 (motorcycle's H strips 1 wide with a vertex at 1e10: naive
         # answers only at tolerance 1/16, deforming's own run gives up on every rung
         # before, so the reference answers; equal to naive and CGAL)
